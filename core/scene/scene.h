@@ -18,11 +18,13 @@
 namespace mpmice::core {
 
 /// Where a value came from in the scene file (1-based line and column; 0 when generated).
+/// The specs below compare equal member by member, locations included.
 struct SourceLoc {
   std::string file;
   int line = 0;
   int column = 0;
   [[nodiscard]] std::string str() const;  // "file:line:column"
+  bool operator==(const SourceLoc&) const = default;
 };
 
 class SceneError : public std::runtime_error {
@@ -45,6 +47,7 @@ struct ModelSpec {
   [[nodiscard]] double get(const std::string& key) const;  // throws std::out_of_range if absent
   [[nodiscard]] double get(const std::string& key, double fallback) const;
   [[nodiscard]] bool has(const std::string& key) const { return params.count(key) != 0; }
+  bool operator==(const ModelSpec&) const = default;
 };
 
 enum class MaterialKind { Solid, Fluid };
@@ -61,6 +64,7 @@ struct MaterialSpec {
   double thermal_conductivity = 0;  // [W/(m K)]; 0 = no conduction
   double thermal_expansivity = 0;   // beta [1/K] (solids)
   SourceLoc where;
+  bool operator==(const MaterialSpec&) const = default;
 };
 
 /// A region of space: box, sphere (circle in 2D), cylinder, annulus, union, difference.
@@ -76,12 +80,14 @@ struct ShapeSpec {
   SourceLoc where;
   /// Point membership (dim = mesh dimension: coordinates beyond it are ignored).
   [[nodiscard]] bool contains(const RealVect& x, int dim) const;
+  bool operator==(const ShapeSpec&) const = default;
 };
 
 /// One material's share of a geometry object.
 struct FillSpec {
   std::string material;
   double volume_fraction = 1.0;
+  bool operator==(const FillSpec&) const = default;
 };
 
 /// A geometry object: fills a region with materials in a given state. Later objects override
@@ -96,6 +102,7 @@ struct RegionSpec {
   std::optional<double> density;       // fluids: optional (else from EOS(p, T))
   IntVect particles_per_cell{2, 2, 2}; // solids: per direction
   SourceLoc where;
+  bool operator==(const RegionSpec&) const = default;
 };
 
 enum class BoundaryType { Symmetry, SlipWall, NoSlipWall, Inflow, Outflow, Periodic, Free };
@@ -109,6 +116,7 @@ struct BoundarySpec {
   double temperature = 300.0;          // inflow
   std::string material;                // inflow: which fluid enters (default: the first fluid)
   SourceLoc where;
+  bool operator==(const BoundarySpec&) const = default;
 };
 
 /// A load on solid particles: "traction" (vector per unit area) or "pressure" (normal to the
@@ -123,6 +131,7 @@ struct LoadSpec {
   RealVect center{0, 0, 0};
   double start = 0, ramp = 0;
   SourceLoc where;
+  bool operator==(const LoadSpec&) const = default;
 };
 
 /// An energy source for a fluid: power per unit volume [W/m^3] into `material` inside `shape`
@@ -133,6 +142,7 @@ struct SourceSpec {
   double power_density = 0;
   double start = 0, end = 0;
   SourceLoc where;
+  bool operator==(const SourceSpec&) const = default;
 };
 
 struct TimeSpec {
@@ -142,6 +152,7 @@ struct TimeSpec {
   double dt_min = 0;        // a step below this stops the run with an error
   double dt_initial = 0;    // 0 = from the CFL condition
   long max_steps = 0;       // 0 = no limit
+  bool operator==(const TimeSpec&) const = default;
 };
 
 struct MpmOptions {
@@ -150,11 +161,13 @@ struct MpmOptions {
   double flip = 1.0;                       // 1 = FLIP, 0 = PIC
   double damping = 0;                      // velocity-proportional damping [1/s]
   bool sort_particles = true;
+  bool operator==(const MpmOptions&) const = default;
 };
 
 struct ExchangePair {
   std::string a, b;
   double momentum = 0, heat = 0;
+  bool operator==(const ExchangePair&) const = default;
 };
 
 struct IceOptions {
@@ -169,6 +182,7 @@ struct IceOptions {
   std::vector<ExchangePair> exchange_pairs;  // overrides per pair
   int max_pressure_iterations = 100;
   double pressure_tolerance = 1e-11;
+  bool operator==(const IceOptions&) const = default;
 };
 
 struct ConvergenceSpec {
@@ -176,6 +190,7 @@ struct ConvergenceSpec {
   std::string type = "relative";  // absolute | relative | residual_relative
   double limit = 1e-6;
   bool strict = false;            // strict: must hold; suffices: enough on its own
+  bool operator==(const ConvergenceSpec&) const = default;
 };
 
 struct AccelerationSpec {
@@ -183,6 +198,7 @@ struct AccelerationSpec {
   double relaxation = 0.5;        // constant; the initial one for aitken and iqn_ils
   int reuse = 8;                  // iqn_ils: past steps kept
   double filter = 1e-8;           // iqn_ils: QR filter threshold
+  bool operator==(const AccelerationSpec&) const = default;
 };
 
 struct CouplingSpec {
@@ -195,6 +211,7 @@ struct CouplingSpec {
   double timeout = 60.0;                // seconds any wait may take
   int mpm_ranks = 1, ice_ranks = 1;     // for `coupler run`
   std::string fluid = "ice";            // ice | openfoam
+  bool operator==(const CouplingSpec&) const = default;
 };
 
 struct OutputSpec {
@@ -203,6 +220,7 @@ struct OutputSpec {
   std::vector<std::string> fields;      // empty = every field the solver offers
   bool particles = true;
   bool enabled = true;
+  bool operator==(const OutputSpec&) const = default;
 };
 
 struct Scene {
@@ -227,6 +245,7 @@ struct Scene {
   [[nodiscard]] std::vector<int> solids() const;   // indices into materials
   [[nodiscard]] std::vector<int> fluids() const;
   [[nodiscard]] std::array<bool, 3> periodic() const;
+  bool operator==(const Scene&) const = default;
 };
 
 /// Reads, validates and completes a scene. Throws SceneError.

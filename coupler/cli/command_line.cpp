@@ -1,0 +1,37 @@
+#include "cli/command_line.h"
+
+#include "cli/check_command.h"
+#include "scene/did_you_mean.h"
+
+namespace mpmice::coupler {
+
+std::string usage() {
+  return "usage: coupler <command> [options]\n"
+         "\n"
+         "commands:\n"
+         "  check [--quiet] <scene.yaml>   validate a scene; print it as understood (defaults filled in)\n"
+         "                                 and a one-line summary; exit 0 if valid, 2 if not\n"
+         "\n"
+         "options:\n"
+         "  -h, --help                     this text\n";
+}
+
+int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.empty()) {
+    err << "coupler: no command given\n\n" << usage();
+    return 2;
+  }
+  const std::string& command = args.front();
+  if (command == "-h" || command == "--help" || command == "help") {
+    out << usage();
+    return 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "check") return runCheck(rest, out, err);
+  err << "coupler: unknown command '" << command << "'"
+      << core::scene_detail::didYouMean(command, {"check", "help"}) << "\n\n"
+      << usage();
+  return 2;
+}
+
+}  // namespace mpmice::coupler
