@@ -1,6 +1,7 @@
 #include "cli/command_line.h"
 
 #include "cli/check_command.h"
+#include "cli/run_command.h"
 #include "scene/did_you_mean.h"
 
 namespace mpmice::coupler {
@@ -11,6 +12,9 @@ std::string usage() {
          "commands:\n"
          "  check [--quiet] <scene.yaml>   validate a scene; print it as understood (defaults filled in)\n"
          "                                 and a one-line summary; exit 0 if valid, 2 if not\n"
+         "  run [--mpm-ranks N] [--ice-ranks N] [--dry-run] <scene.yaml>\n"
+         "                                 compose, print and run the MPMD launch of mpm_solver and\n"
+         "                                 ice_solver on the scene (ranks from coupling.ranks)\n"
          "\n"
          "options:\n"
          "  -h, --help                     this text\n";
@@ -28,8 +32,9 @@ int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std:
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "check") return runCheck(rest, out, err);
+  if (command == "run") return runRun(rest, out, err);
   err << "coupler: unknown command '" << command << "'"
-      << core::scene_detail::didYouMean(command, {"check", "help"}) << "\n\n"
+      << core::scene_detail::didYouMean(command, {"check", "run", "help"}) << "\n\n"
       << usage();
   return 2;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// @brief The `coupler` command line: picks the subcommand and prints usage.
 ///
-/// Subcommands: `check <scene.yaml>` (see check_command.h). `coupler --help` prints usage and
+/// Subcommands: `check <scene.yaml>` (check_command.h), `run <scene.yaml>` (run_command.h). `coupler --help` prints usage and
 /// returns 0; no subcommand or an unknown one prints usage to `err` and returns 2. Nothing here
 /// initialises MPI.
 #include <ostream>
