@@ -1,0 +1,108 @@
+// MPM verification studies at full size (the figures of docs/mpm.md).
+//
+// Sample runs:  build/benchmarks/mpm/mpm_study bar
+//               build/benchmarks/mpm/mpm_study lame [linear|gimp|bspline2|bspline3 ...]
+//               build/benchmarks/mpm/mpm_study disks
+//               scripts/mpirun -np 4 build/benchmarks/mpm/mpm_study lame gimp
+// 1. bar:   vibrating bar, 4 resolutions per shape function: v_cm error, energy drift, order.
+// 2. lame:  Lame cylinder, dx = 0.05 ... 0.00625: Eq. 13 error and order per shape function.
+// 3. disks: colliding disks, energy over the collision per update scheme (FLIP and PIC).
+#include <chrono>
+#include <cstdlib>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "mpm_problems.h"
+#include "parallel/mpi_session.h"
+
+using namespace mpmice;
+using namespace mpmice::mpm;
+namespace pr = mpmice::mpm::problems;
+
+namespace {
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  core::MpiSession session(argc, argv);
+  const core::Comm comm = session.world();
+  const std::string what = argc > 1 ? argv[1] : "bar";
+  std::vector<std::string> shapes;
+  for (int a = 2; a < argc; ++a) shapes.emplace_back(argv[a]);
+  if (shapes.empty()) shapes = {"linear", "gimp", "bspline2", "bspline3"};
+  const bool root = comm.root();
+  try {
+    if (what == "bar") {
+      // 1. Vibrating bar.
+      if (root) std::printf("| shape | cells | particles | steps | v_cm error | energy drift | order | wall [s] |\n|---|---|---|---|---|---|---|---|\n");
+      for (const auto& sh : shapes) {
+        std::vector<double> hs, es;
+        for (int cells : {13, 25, 50, 100}) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const char* up = std::getenv("MPM_UPDATE");
+          const auto s = pr::barScene(cells, sh, up ? up : "usl");
+          const auto r = pr::runBar(s, comm);
+          hs.push_back(s.mesh.dx(0));
+          es.push_back(r.error);
+          const std::string order = hs.size() > 1 ? std::to_string(pr::observedOrder(
+                                                        {hs[hs.size() - 2], hs.back()}, {es[es.size() - 2], es.back()}))
+                                                  : "";
+          if (root)
+            std::printf("| %s | %d | %lld | %ld | %.4e | %.3e | %s | %.2f |\n", sh.c_str(), cells,
+                        r.particles, r.steps, r.error, r.energyDrift, order.c_str(), seconds(t0));
+        }
+        if (root) std::printf("| %s | fitted order over 4 grids | | | | | %.3f | |\n", sh.c_str(), pr::observedOrder(hs, es));
+      }
+    } else if (what == "lame") {
+      // 2. Lame cylinder.
+      if (root) std::printf("| shape | dx | particles | steps | Eq. 13 error | order | wall [s] |\n|---|---|---|---|---|---|---|\n");
+      std::vector<double> dxs = {0.05, 0.025, 0.0125, 0.00625};
+      if (const char* e = std::getenv("LAME_DX")) dxs = {std::atof(e)};
+      for (const auto& sh : shapes) {
+        std::vector<double> hs, es;
+        for (double dx : dxs) {
+          const auto t0 = std::chrono::steady_clock::now();
+          auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
+          const auto r = pr::runLame(pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 2.5e-3),
+                                                   env("LAME_DAMP", 5000)), comm);
+          hs.push_back(dx);
+          es.push_back(r.error);
+          const std::string order = hs.size() > 1 ? std::to_string(pr::observedOrder(
+                                                        {hs[hs.size() - 2], hs.back()}, {es[es.size() - 2], es.back()}))
+                                                  : "";
+          if (root)
+            std::printf("| %s | %g | %lld | %ld | %.4e | %s | %.2f |\n", sh.c_str(), dx, r.particles,
+                        r.steps, r.error, order.c_str(), seconds(t0));
+        }
+        if (root && hs.size() > 1) std::printf("| %s | fitted order over %zu grids | | | | %.3f | |\n", sh.c_str(), hs.size(), pr::observedOrder(hs, es));
+      }
+    } else if (what == "disks") {
+      // 3. Colliding disks.
+      if (root) std::printf("| update | flip | E(0) [J/m] | min E | max E | E(end) | change | KE min |\n|---|---|---|---|---|---|---|---|\n");
+      for (const char* up : {"usf", "usl", "musl"})
+        for (double flip : {1.0, 0.0}) {
+          const auto es = pr::runDisks(pr::disksScene(40, up, flip), comm);
+          double mn = 1e300, mx = 0, kmin = 1e300;
+          for (const auto& e : es) {
+            mn = std::min(mn, e.kinetic + e.strain);
+            mx = std::max(mx, e.kinetic + e.strain);
+            kmin = std::min(kmin, e.kinetic);
+          }
+          const double e0 = es.front().kinetic + es.front().strain, e1 = es.back().kinetic + es.back().strain;
+          if (root)
+            std::printf("| %s | %g | %.4f | %.4f | %.4f | %.4f | %+.2f%% | %.4f |\n", up, flip, e0, mn, mx, e1,
+                        100 * (e1 - e0) / e0, kmin);
+        }
+    } else {
+      if (root) std::fprintf(stderr, "mpm_study: unknown study '%s'; valid: bar, lame, disks\n", what.c_str());
+      return 2;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mpm_study: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

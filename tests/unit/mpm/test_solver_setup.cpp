@@ -1,0 +1,170 @@
+// MpmSolver set-up: particle generation counts, time step from CFL, boundary conditions, bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mpm_problems.h"
+#include "parallel/comm.h"
+
+using namespace mpmice;
+using namespace mpmice::mpm;
+namespace pr = mpmice::mpm::problems;
+
+namespace {
+core::Comm self() { return core::Comm(MPI_COMM_SELF); }
+
+struct MpiGuard {  // plain gtest main: initialise MPI once for MPI_COMM_SELF
+  MpiGuard() {
+    int init = 0;
+    MPI_Initialized(&init);
+    if (!init) MPI_Init(nullptr, nullptr);
+  }
+  ~MpiGuard() {
+    int fin = 0;
+    MPI_Finalized(&fin);
+    if (!fin) MPI_Finalize();
+  }
+};
+MpiGuard g_mpi;
+
+core::Scene blockScene() {
+  core::Scene s;
+  s.mesh = core::Mesh(2, {0, 0, 0}, {0.25, 0.25, 1}, {8, 8, 1});
+  for (auto& f : s.boundary) f.type = core::BoundaryType::NoSlipWall;
+  s.materials = {pr::solid("block", 1000, pr::elastic("linear_elastic", 1e6, 0.25))};
+  core::ShapeSpec box;
+  box.type = "box";
+  box.lo = {0.5, 0.5, 0};
+  box.hi = {1.5, 1.0, 0};
+  s.geometry = {pr::region("block", box, "block", {2, 3, 1})};
+  return s;
+}
+
+std::string errorOf(const core::Scene& s) {
+  try {
+    MpmSolver solver(s, self());
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(ParticleGeneration, CountsPerCell) {
+  MpmSolver solver(blockScene(), self());
+  // 4 x 2 cells covered, 2 x 3 particles each.
+  EXPECT_EQ(solver.globalParticleCount(), 4 * 2 * 6);
+  double mass = 0;
+  for (double m : solver.particles().mass) mass += m;
+  EXPECT_NEAR(mass, 1000 * 1.0 * 0.5, 1e-9);
+  EXPECT_NEAR(solver.particles().halfSize[1][0], 0.25 / 6, 1e-15);
+}
+
+TEST(ParticleGeneration, DiskCountNearArea) {
+  auto s = pr::disksScene(40, "usl", 1.0);
+  MpmSolver solver(s, self());
+  const double expected = 2 * M_PI * 0.04 / (0.0125 * 0.0125);
+  EXPECT_NEAR(static_cast<double>(solver.globalParticleCount()), expected, 0.02 * expected);
+}
+
+TEST(TimeStep, FromCflAndWaveSpeed) {
+  auto s = blockScene();
+  s.time.cfl = 0.3;
+  MpmSolver solver(s, self());
+  const double E = 1e6, nu = 0.25, K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / 1000);
+  EXPECT_NEAR(solver.stableTimeStep(), 0.3 * 0.25 / c, 1e-12);
+}
+
+TEST(BoundaryConditions, FixedAndRoller) {
+  core::Scene s = blockScene();
+  s.boundary[0].type = core::BoundaryType::NoSlipWall;  // x-: fixed
+  s.boundary[2].type = core::BoundaryType::Symmetry;    // y-: roller
+  s.boundary[1].type = core::BoundaryType::Free;
+  const core::Box nodes = core::Box({-1, -1, 0}, {9, 9, 0});
+  BoundaryConditions bc(s.boundary, s.mesh, nodes);
+  core::Field v("v", core::Centering::Node, nodes, 3, 1, 1.0);
+  bc.apply(v);
+  EXPECT_EQ(v(0, 4, 0, 0), 0.0);
+  EXPECT_EQ(v(0, 4, 0, 1), 0.0);
+  EXPECT_EQ(v(-1, 4, 0, 1), 0.0);  // beyond the face too
+  EXPECT_EQ(v(4, 0, 0, 1), 0.0);   // roller: normal component
+  EXPECT_EQ(v(4, 0, 0, 0), 1.0);   //         tangential free
+  EXPECT_EQ(v(8, 4, 0, 0), 1.0);   // free face
+  EXPECT_EQ(v(4, 4, 0, 0), 1.0);
+  s.boundary[3].type = core::BoundaryType::Periodic;
+  EXPECT_THROW(BoundaryConditions(s.boundary, s.mesh, nodes), std::invalid_argument);
+}
+
+TEST(BadInput, ParticleOutsideMesh) {
+  auto s = blockScene();
+  s.geometry[0].shape.hi = {2.5, 1.0, 0};
+  const auto m = errorOf(s);
+  EXPECT_NE(m.find("outside the mesh"), std::string::npos) << m;
+  EXPECT_NE(m.find("geometry.block"), std::string::npos) << m;
+}
+
+TEST(BadInput, ParticleLeavesMeshDuringRun) {
+  auto s = blockScene();
+  s.boundary[1].type = core::BoundaryType::Free;
+  s.geometry[0].velocity = {50, 0, 0};
+  MpmSolver solver(s, self());
+  try {
+    for (int k = 0; k < 2000; ++k) solver.advance();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the mesh"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BadInput, DensityNotPositive) {
+  for (double rho : {0.0, -5.0}) {
+    auto s = blockScene();
+    s.materials[0].density = rho;
+    const auto m = errorOf(s);
+    EXPECT_NE(m.find("materials.block.density"), std::string::npos) << m;
+  }
+}
+
+TEST(BadInput, UnknownModelShapeScheme) {
+  auto s = blockScene();
+  s.materials[0].constitutive.type = "hyperfoam";
+  auto m = errorOf(s);
+  EXPECT_NE(m.find("hyperfoam"), std::string::npos);
+  EXPECT_NE(m.find("linear_elastic, neo_hookean, j2_plasticity"), std::string::npos) << m;
+  s = blockScene();
+  s.mpm.shape_function = "hat";
+  m = errorOf(s);
+  EXPECT_NE(m.find("linear, gimp, bspline2, bspline3"), std::string::npos) << m;
+  s = blockScene();
+  s.mpm.update = "apic";
+  m = errorOf(s);
+  EXPECT_NE(m.find("usf, usl, musl"), std::string::npos) << m;
+}
+
+TEST(BadInput, CflAboveOne) {
+  auto s = blockScene();
+  s.time.cfl = 1.5;
+  const auto m = errorOf(s);
+  EXPECT_NE(m.find("time.cfl"), std::string::npos) << m;
+  EXPECT_NE(m.find("1.5"), std::string::npos) << m;
+}
+
+TEST(Phases, CellStateConservesMass) {
+  auto s = blockScene();
+  MpmSolver solver(s, self());
+  solver.beginStep(solver.stableTimeStep());
+  solver.particlesToGrid();
+  const auto& cs = solver.cellState(0);
+  double m = 0;
+  core::forEach(cs.mass.box(), [&](int i, int j, int k) { m += cs.mass(i, j, k); });
+  EXPECT_NEAR(m, 500.0, 1e-9);
+  solver.computeInternalForces();
+  solver.updateGrid();
+  core::Field dv("dv", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+  core::forEach(dv.box(), [&](int i, int j, int k) { dv(i, j, k, 0) = 0.1; });
+  solver.applyCellVelocityIncrement(0, dv);
+  solver.gridToParticles();
+  solver.endStep();
+  EXPECT_NEAR(solver.centerOfMassVelocity()[0], 0.1, 1e-9);  // interior block: exact
+}
