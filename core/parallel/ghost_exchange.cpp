@@ -24,19 +24,33 @@ std::vector<IntVect> imageShifts(const Decomposition& d, Centering c) {
   return shifts;
 }
 
+/// Rank r's owned box, extended by ng beyond the non-periodic domain faces it touches.
+Box ownedWithExterior(const Decomposition& d, int r, Centering c, int ng) {
+  Box b = d.ownedBox(r, c);
+  const Box cells = d.cellBox(r);
+  for (int dir = 0; dir < d.mesh().dim(); ++dir) {
+    if (d.periodic()[dir]) continue;
+    if (cells.lo[dir] == 0) b = b.growLo(dir, ng);
+    if (cells.hi[dir] == d.mesh().cells()[dir] - 1) b = b.growHi(dir, ng);
+  }
+  return b;
+}
+
 }  // namespace
 
-GhostExchange::GhostExchange(const Decomposition& decomp, const Comm& comm, Centering c, int nghost)
+GhostExchange::GhostExchange(const Decomposition& decomp, const Comm& comm, Centering c, int nghost,
+                             bool ownExterior)
     : comm_(comm) {
   if (decomp.numRanks() != comm.size())
     throw std::invalid_argument("GhostExchange: decomposition has " + std::to_string(decomp.numRanks()) +
                                 " boxes but the communicator has " + std::to_string(comm.size()) + " ranks");
   const int me = comm.rank();
   stored_ = decomp.storedBox(me, c, nghost);
-  owned_ = decomp.ownedBox(me, c);
+  auto owned = [&](int r) { return ownExterior ? ownedWithExterior(decomp, r, c, nghost) : decomp.ownedBox(r, c); };
+  owned_ = owned(me);
   const auto shifts = imageShifts(decomp, c);
   for (int peer = 0; peer < decomp.numRanks(); ++peer) {
-    const Box peerOwned = decomp.ownedBox(peer, c);
+    const Box peerOwned = owned(peer);
     const Box peerStored = decomp.storedBox(peer, c, nghost);
     for (const IntVect& s : shifts) {
       const bool self = (peer == me && s == IntVect{0, 0, 0});

@@ -5,6 +5,9 @@
 /// sumAndFill(): node (or cell) contributions that ranks accumulated in their ghost layers are
 /// added into the owners' values, then the totals are copied back to every ghost layer: what MPM
 /// needs after particle-to-grid. Overlaps are computed once at construction.
+/// With ownExterior, the ghost layers outside the mesh (beyond non-periodic domain faces) belong
+/// to the rank whose box touches that face, so contributions there are summed across ranks too
+/// (wide stencils such as B-splines deposit on nodes outside the mesh).
 #include <vector>
 
 #include "field/field.h"
@@ -15,7 +18,8 @@ namespace mpmice::core {
 
 class GhostExchange {
  public:
-  GhostExchange(const Decomposition& decomp, const Comm& comm, Centering c, int nghost);
+  GhostExchange(const Decomposition& decomp, const Comm& comm, Centering c, int nghost,
+                bool ownExterior = false);
 
   /// Owners' values into ghosts (field must have the stored box of this exchange).
   void fill(Field& f) const;

@@ -1,6 +1,7 @@
 // Ghost exchange and node sums across ranks match a serial computation (run with 1 and 4 ranks).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "parallel/ghost_exchange.h"
@@ -86,3 +87,37 @@ TEST_P(GhostExchangeTest, NodeSumMatchesSerialDeposit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Dims, GhostExchangeTest, ::testing::Values(1, 2, 3));
+
+TEST_P(GhostExchangeTest, WideStencilSumIncludesNodesOutsideTheMesh) {
+  // A quadratic B-spline stencil reaches one node beyond each mesh face: with ownExterior those
+  // nodes are summed across ranks like interior ones and match a serial deposit.
+  const int dim = GetParam();
+  const Comm& comm = mpmice::test::comm();
+  Mesh m(dim, {0, 0, 0}, {1, 1, 1}, {8, 6, 4});
+  Decomposition d(m, comm.size());
+  const int ng = 1;
+  GhostExchange ex(d, comm, Centering::Node, ng, true);
+  Field f("mass", Centering::Node, ex.storedBox(), 1, ng, 0.0);
+  const Box serialNodes = m.nodeBox().grow(ng, dim);
+  Field serial("serial", Centering::Node, serialNodes, 1, ng, 0.0);
+  auto deposit = [&](Field& into, const Box& cells) {
+    forEach(cells, [&](int i, int j, int k) {
+      const int lo = -1, hi = 2;  // nodes i-1 .. i+2
+      for (int c = (dim >= 3 ? lo : 0); c <= (dim >= 3 ? hi : 0); ++c)
+        for (int b = (dim >= 2 ? lo : 0); b <= (dim >= 2 ? hi : 0); ++b)
+          for (int a = lo; a <= hi; ++a) {
+            const int x = std::clamp(i + a, -1, m.cells()[0] + 1);
+            const int y = dim >= 2 ? std::clamp(j + b, -1, m.cells()[1] + 1) : 0;
+            const int z = dim >= 3 ? std::clamp(k + c, -1, m.cells()[2] + 1) : 0;
+            into(x, y, z) += valueAt(i, j, k, 0) * (1 + (a + 1) + 4 * (b + 1) + 16 * (c + 1));
+          }
+    });
+  };
+  deposit(f, d.cellBox(comm.rank()));
+  deposit(serial, m.cellBox());
+  ex.sumAndFill(f);
+  forEach(ex.storedBox(), [&](int i, int j, int k) {
+    EXPECT_NEAR(f(i, j, k), serial(i, j, k), 1e-9 * std::abs(serial(i, j, k)))
+        << "dim " << dim << " node " << i << "," << j << "," << k;
+  });
+}
