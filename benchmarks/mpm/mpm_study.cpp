@@ -2,12 +2,14 @@
 //
 // Sample runs:  build/benchmarks/mpm/mpm_study bar
 //               build/benchmarks/mpm/mpm_study lame [linear|gimp|bspline2|bspline3 ...]
+//               build/benchmarks/mpm/mpm_study lame_layers [shapes]   (where the Lame error sits)
 //               build/benchmarks/mpm/mpm_study disks
 //               scripts/mpirun -np 4 build/benchmarks/mpm/mpm_study lame gimp
 // 1. bar:   vibrating bar, 4 resolutions per shape function: v_cm error, energy drift, order.
 // 2. lame:  Lame cylinder, dx = 0.05 ... 0.00625: Eq. 13 error and order per shape function.
 // 3. disks: colliding disks, energy over the collision per update scheme (FLIP and PIC).
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <string>
@@ -61,13 +63,14 @@ int main(int argc, char** argv) {
       if (root) std::printf("| shape | dx | particles | steps | Eq. 13 error | order | wall [s] |\n|---|---|---|---|---|---|---|\n");
       std::vector<double> dxs = {0.05, 0.025, 0.0125, 0.00625};
       if (const char* e = std::getenv("LAME_DX")) dxs = {std::atof(e)};
+      if (std::getenv("LAME_COARSE")) dxs = {0.05, 0.025, 0.0125};  // the test's three grids
       for (const auto& sh : shapes) {
         std::vector<double> hs, es;
         for (double dx : dxs) {
           const auto t0 = std::chrono::steady_clock::now();
           auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
           const auto r = pr::runLame(pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 2.5e-3),
-                                                   env("LAME_DAMP", 5000)), comm);
+                                                   env("LAME_DAMP", 5000), static_cast<int>(env("LAME_PPC", 2))), comm);
           hs.push_back(dx);
           es.push_back(r.error);
           const std::string order = hs.size() > 1 ? std::to_string(pr::observedOrder(
@@ -79,6 +82,34 @@ int main(int argc, char** argv) {
         }
         if (root && hs.size() > 1) std::printf("| %s | fitted order over %zu grids | | | | %.3f | |\n", sh.c_str(), hs.size(), pr::observedOrder(hs, es));
       }
+    } else if (what == "lame_layers") {
+      // 2b. Where the Lame error sits: Eq. 13 sums split into the inner loaded layer, the outer
+      //     free-surface layer (one particle layer each) and the interior, as shares of the total.
+      if (root) std::printf("| shape | dx | Eq. 13 error | inner layer | outer layer | interior | interior mean bias | interior within 2 dx of the symmetry planes |\n|---|---|---|---|---|---|---|---|\n");
+      for (const auto& sh : shapes)
+        for (double dx : {0.05, 0.025, 0.0125}) {
+          auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
+          const int ppc = static_cast<int>(env("LAME_PPC", 2));
+          const auto scene = pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 2.5e-3), env("LAME_DAMP", 5000), ppc);
+          MpmSolver solver(scene, comm);
+          while (solver.time() < scene.time.end * (1 - 1e-12)) solver.advance(scene.time.end);
+          pr::Lame l;
+          const auto& p = solver.particles();
+          std::vector<double> acc(5, 0.0);
+          for (std::size_t i = 0; i < p.size(); ++i) {
+            const double r = std::hypot(p.x[0][i], p.x[1][i]);
+            const double e = (p.stress[kXX][i] + p.stress[kYY][i] - l.sumExact()) / l.sumExact();
+            const int bin = r < l.ri + dx / ppc ? 0 : (r > l.ro - dx / ppc ? 1 : 2);
+            acc[bin] += std::fabs(e);
+            if (bin == 2) acc[3] += e;
+            if (bin == 2 && std::min(p.x[0][i], p.x[1][i]) < 2 * dx) acc[4] += std::fabs(e);
+          }
+          comm.sumInPlace(acc);
+          const double n = static_cast<double>(solver.globalParticleCount());
+          if (root)
+            std::printf("| %s | %g | %.4f | %.4f | %.4f | %.4f | %+.4f | %.4f |\n", sh.c_str(), dx, (acc[0] + acc[1] + acc[2]) / n,
+                        acc[0] / n, acc[1] / n, acc[2] / n, acc[3] / n, acc[4] / n);
+        }
     } else if (what == "disks") {
       // 3. Colliding disks.
       if (root) std::printf("| update | flip | E(0) [J/m] | min E | max E | E(end) | change | KE min |\n|---|---|---|---|---|---|---|---|\n");
@@ -97,7 +128,7 @@ int main(int argc, char** argv) {
                         100 * (e1 - e0) / e0, kmin);
         }
     } else {
-      if (root) std::fprintf(stderr, "mpm_study: unknown study '%s'; valid: bar, lame, disks\n", what.c_str());
+      if (root) std::fprintf(stderr, "mpm_study: unknown study '%s'; valid: bar, lame, lame_layers, disks\n", what.c_str());
       return 2;
     }
   } catch (const std::exception& e) {

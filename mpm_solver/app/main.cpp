@@ -4,16 +4,22 @@
 //               scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml
 // 1. Read and validate the scene (errors name file, line and key; exit 1).
 // 2. Build the solver: decomposition over the ranks, particles from the geometry.
-// 3. Step to time.end with progress lines; write energies (CSV) at each output time.
-#include <chrono>
+// 3. Step to time.end with progress lines (core/util/progress.h). At t = 0, at every
+//    output.interval and at the last step (unless output.enabled is false): one HDF5 file of
+//    particles and grid nodes plus the XDMF index (solver/mpm_output.h), and a row of energies in
+//    <directory>/<scene>_energies.csv.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <memory>
 #include <string>
 
 #include "parallel/mpi_session.h"
 #include "scene/scene.h"
+#include "solver/mpm_output.h"
 #include "solver/mpm_solver.h"
+#include "util/progress.h"
 
 using namespace mpmice;
 
@@ -30,56 +36,58 @@ int main(int argc, char** argv) {
     // 2. Solver.
     mpm::MpmSolver solver(scene, comm);
     const long long np = solver.globalParticleCount();
+    core::Progress progress(std::cout, comm, 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
+    progress.start(scene.name, scene.mesh.describe(), comm.size());
     if (comm.root()) {
-      std::printf("mpm_solver: scene '%s' (%s)\n  mesh: %s\n  particles: %lld, ranks: %d\n"
-                  "  shape function: %s, update: %s, flip: %g, damping: %g 1/s\n  end time: %g s, cfl: %g\n",
-                  scene.name.c_str(), scene.file.c_str(), scene.mesh.describe().c_str(), np, comm.size(),
+      std::printf("  particles: %lld\n  shape function: %s, update: %s, flip: %g, damping: %g 1/s, cfl: %g\n", np,
                   scene.mpm.shape_function.c_str(), scene.mpm.update.c_str(), scene.mpm.flip, scene.mpm.damping,
-                  scene.time.end, scene.time.cfl);
+                  scene.time.cfl);
       std::fflush(stdout);
     }
-    // 3. Time loop.
+    // 3. Output (collective) and time loop.
+    std::unique_ptr<mpm::MpmOutput> output;
     std::ofstream csv;
-    if (comm.root() && scene.output.enabled) {
-      std::filesystem::create_directories(scene.output.directory);
-      const std::string path = scene.output.directory + "/" + scene.name + "_energies.csv";
-      csv.open(path);
-      csv << "step,time,kinetic,strain,total\n";
-      std::printf("  energies: %s\n", path.c_str());
+    if (scene.output.enabled) {
+      output = std::make_unique<mpm::MpmOutput>(solver);
+      if (comm.root()) {
+        const std::string path = scene.output.directory + "/" + scene.name + "_energies.csv";
+        csv.open(path);
+        csv << "step,time,kinetic,strain,total\n";
+        std::printf("  output: %s (energies: %s)\n", output->xdmfPath().c_str(), path.c_str());
+        std::fflush(stdout);
+      }
     }
-    auto writeEnergies = [&] {
-      const auto e = solver.energies();
+    auto writeOutput = [&] {
+      const auto e = solver.energies();  // collective
       if (csv.is_open())
         csv << solver.stepCount() << ',' << solver.time() << ',' << e.kinetic << ',' << e.strain << ','
             << e.total() << '\n';
+      if (output) output->write(solver);
     };
-    writeEnergies();
-    const auto t0 = std::chrono::steady_clock::now();
-    double nextOut = scene.output.interval > 0 ? scene.output.interval : scene.time.end;
-    double nextPrint = 0;
-    while (solver.time() < scene.time.end * (1 - 1e-12)) {
-      if (scene.time.max_steps > 0 && solver.stepCount() >= scene.time.max_steps) break;
-      solver.advance(std::min(scene.time.end, nextOut));
-      if (solver.time() >= nextOut * (1 - 1e-12)) {
-        writeEnergies();
-        nextOut += scene.output.interval > 0 ? scene.output.interval : scene.time.end;
-      }
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (comm.root() && (wall >= nextPrint || solver.time() >= scene.time.end * (1 - 1e-12))) {
-        const double frac = solver.time() / scene.time.end;
-        std::printf("  step %ld  t = %.6g s  (%.1f%%)  wall %.1f s  ETA %.1f s\n", solver.stepCount(), solver.time(),
-                    100 * frac, wall, frac > 0 ? wall * (1 - frac) / frac : 0.0);
-        std::fflush(stdout);
-        nextPrint = wall + 2.0;
-      }
+    if (output) {
+      solver.projectToGrid();  // node fields of the initial state
+      writeOutput();
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double interval = scene.output.interval > 0 ? scene.output.interval : scene.time.end;
+    double nextOut = interval;
+    const double tEnd = scene.time.end * (1 - 1e-12);
+    bool written = true;
+    while (solver.time() < tEnd) {
+      if (scene.time.max_steps > 0 && solver.stepCount() >= scene.time.max_steps) break;
+      const double dt = solver.advance(std::min(scene.time.end, nextOut));
+      written = false;
+      if (solver.time() >= nextOut * (1 - 1e-12)) {
+        writeOutput();
+        written = true;
+        while (nextOut <= solver.time() * (1 + 1e-12)) nextOut += interval;
+      }
+      progress.step(static_cast<int>(solver.stepCount()), solver.time(), dt, {}, solver.time() >= tEnd);
+    }
+    if (!written) writeOutput();  // stopped by time.max_steps between output times
     const auto e = solver.energies();
+    progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");
     if (comm.root())
-      std::printf("done: %ld steps, t = %g s, wall %.2f s, %.3g particle-steps/s\n  energy: kinetic %.6g, "
-                  "strain %.6g, total %.6g\n",
-                  solver.stepCount(), solver.time(), wall, double(np) * double(solver.stepCount()) / wall, e.kinetic,
-                  e.strain, e.total());
+      std::printf("  energy: kinetic %.6g, strain %.6g, total %.6g\n", e.kinetic, e.strain, e.total());
   } catch (const std::exception& ex) {
     if (comm.root()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
     return 1;

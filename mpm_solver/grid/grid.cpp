@@ -5,8 +5,8 @@ namespace mpmice::mpm {
 using core::Centering;
 using core::Field;
 
-Grid::Grid(const core::Decomposition& decomp, const core::Comm& comm)
-    : exchange_(decomp, comm, Centering::Node, kGhost), serial_(comm.size() == 1) {
+Grid::Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exteriorGhosts)
+    : exchange_(decomp, comm, Centering::Node, kGhost, exteriorGhosts), serial_(comm.size() == 1) {
   const core::Box b = decomp.storedBox(comm.rank(), Centering::Node, kGhost);
   mass = Field("mass", Centering::Node, b, 1, kGhost);
   velocity = Field("velocity", Centering::Node, b, 3, kGhost);

@@ -6,7 +6,9 @@
 /// velocity (particle-to-grid velocity v_n), velocityL (Lagrangian velocity after the grid
 /// update), force (internal + body + loads), externalForce (the coupler's hook: e.g. ICE's
 /// pressure force, added in the grid update) and remap (MUSL's remapped velocity). The ghost
-/// layer reaches one node beyond the mesh at its faces, so B-splines need no special stencil.
+/// layer reaches one node beyond the mesh at its faces, so B-splines need no special stencil; with
+/// `exteriorGhosts` (the B-spline shapes) that exterior layer belongs to the rank at the face and
+/// is summed across ranks like any owned node (GhostExchange's ownExterior).
 #include <vector>
 
 #include "field/field.h"
@@ -31,7 +33,7 @@ struct GridGeom {
 class Grid {
  public:
   static constexpr int kGhost = 1;
-  Grid(const core::Decomposition& decomp, const core::Comm& comm);
+  Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exteriorGhosts = false);
 
   [[nodiscard]] const core::Box& box() const { return mass.box(); }
   [[nodiscard]] const GridGeom& geom() const { return geom_; }

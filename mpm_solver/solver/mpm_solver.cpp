@@ -61,16 +61,13 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
     throw std::invalid_argument("mpm.damping: must be >= 0 [1/s], got " + num(scene_.mpm.damping));
   shape_ = parseShapeFunction(scene_.mpm.shape_function);
   scheme_ = &parseUpdateScheme(scene_.mpm.update);
-  if (comm_.size() > 1 && (shape_ == ShapeKind::BSpline2 || shape_ == ShapeKind::BSpline3))
-    throw std::invalid_argument("mpm.shape_function: " + scene_.mpm.shape_function +
-                                " is not yet supported on several ranks (its stencil reaches the node "
-                                "layer outside the mesh, which the ghost exchange does not sum); run "
-                                "on one rank or use linear or gimp");
   flip_ = scene_.mpm.flip;
   damping_ = scene_.mpm.damping;
   // 2. Decomposition, grid, boundary conditions.
   decomp_ = core::Decomposition(mesh, comm_.size());
-  grid_ = std::make_unique<Grid>(decomp_, comm_);
+  // B-splines deposit on the node layer outside the mesh: on several ranks it is summed too.
+  const bool wide = shape_ == ShapeKind::BSpline2 || shape_ == ShapeKind::BSpline3;
+  grid_ = std::make_unique<Grid>(decomp_, comm_, wide);
   bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
   // 3. Constitutive models of the solids.
   models_.resize(scene_.materials.size());
@@ -110,6 +107,9 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   double minMass = 1e300;
   for (double m : p_.mass) minMass = std::min(minMass, m);
   massFloor_ = 1e-12 * comm_.min(minMass);
+  // Only the linear hat needs the cut-off: its gradient stays 1/dx where its weight vanishes. The C1
+  // shapes (GIMP, B-splines) have grad w ~ sqrt(w) there, so dt f / m times grad w stays bounded.
+  accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
   migrateAndSort(true);
 }
 
@@ -150,6 +150,12 @@ double MpmSolver::advance(double until) {
   gridToParticles();
   endStep();
   return dt;
+}
+
+void MpmSolver::projectToGrid() {
+  grid_->mass.fill(0.0);
+  grid_->velocity.fill(0.0);
+  particlesToGrid();
 }
 
 void MpmSolver::assignArcAreas(int l) {
@@ -315,7 +321,7 @@ void MpmSolver::updateGrid() {
     const double* fe = g.externalForce.data(d);
     double* vl = g.velocityL.data(d);
     for (std::int64_t k = 0; k < n; ++k)
-      vl[k] = m[k] > massFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : 0.0;
+      vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
   }
   applyBC(g.velocityL);
 }
@@ -475,14 +481,19 @@ const SolidCellState& MpmSolver::cellState(int material) {
     cs->specificVolume = Field("specific_volume", Centering::Cell, cells, 1, 0);
     materialNodeMass_[material] = Field("mass", Centering::Node, g.box(), 1, Grid::kGhost);
   }
-  // Node mass, momentum (in remap), volume and m T (in force: components 0 and 1) of this material.
+  if (cellMomentum_.npts() == 0) {  // scratch shared by all materials, allocated once
+    cellMomentum_ = Field("momentum", Centering::Node, g.box(), 3, Grid::kGhost);
+    cellVolumeTemperature_ = Field("volume_temperature", Centering::Node, g.box(), 2, Grid::kGhost);
+  }
+  // Node mass, momentum, volume and m T of this material.
   Field& nm = materialNodeMass_[material];
-  Field mom("momentum", Centering::Node, g.box(), 3, Grid::kGhost);
-  Field vt("volume_temperature", Centering::Node, g.box(), 3, Grid::kGhost);
+  Field& mom = cellMomentum_;
+  Field& vt = cellVolumeTemperature_;
   const auto [b, e] = p_.materialRange(material);
   nm.fill(0.0);
+  mom.fill(0.0);
+  vt.fill(0.0);
   double* mp[3] = {mom.data(0), mom.data(1), mom.data(2)};
-  // Volume and m T ride in the momentum kernel's slots: scatter (V, m T) as "velocities" of unit mass.
   const GridGeom geom = g.geom();
   const int dim = scene_.mesh.dim();
   dispatch(shape_, dim, [&]<class S, int D>() {
@@ -563,6 +574,31 @@ void MpmSolver::applyCellVelocityIncrement(int material, const Field& dv) {
       if (m[k] > massFloor_) vl[k] += dp[k] / m[k];
   }
   applyBC(g.velocityL);
+}
+
+void MpmSolver::addCellForce(int material, const Field& force) {
+  const Field& nm = materialNodeMass_.at(material);
+  if (nm.npts() == 0) throw std::logic_error("addCellForce: call cellState(material) first in this step");
+  const SolidCellState& cs = *cellStates_.at(material);
+  Grid& g = *grid_;
+  const core::Mesh& mesh = scene_.mesh;
+  const int dim = mesh.dim(), nc = 1 << dim;
+  g.remap.fill(0.0);  // node force contributions of this rank's cells
+  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+    const double mc = cs.mass(i, j, k);
+    if (!(mc > massFloor_)) return;
+    for (int c = 0; c < nc; ++c) {
+      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk) / mc;
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * force(i, j, k, d);
+    }
+  });
+  g.sumAndFill({&g.remap});
+  for (int d = 0; d < dim; ++d) {
+    double* fe = g.externalForce.data(d);
+    const double* df = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
+  }
 }
 
 Energies MpmSolver::energies() const {

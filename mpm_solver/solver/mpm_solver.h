@@ -48,6 +48,7 @@ class MpmSolver {
   [[nodiscard]] ParticleSet& particles() { return p_; }
   [[nodiscard]] const ParticleSet& particles() const { return p_; }
   [[nodiscard]] Grid& grid() { return *grid_; }
+  [[nodiscard]] const Grid& grid() const { return *grid_; }
   [[nodiscard]] long long globalParticleCount() const;
   [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] long stepCount() const { return step_; }
@@ -55,10 +56,20 @@ class MpmSolver {
   [[nodiscard]] const SchemeTraits& scheme() const { return *scheme_; }
   [[nodiscard]] const ConstitutiveModel& model(int material) const { return *models_[material]; }
 
+  /// Small-mass cut-off of the grid update with linear hats: a node whose mass is below this
+  /// fraction of the smallest particle mass keeps v_L = v_n (no acceleration). Such nodes appear
+  /// when a particle just enters a cell (weight ~ 0) while the hat's gradient stays 1/dx: f/m there
+  /// is unbounded and, through the velocity gradient, blew up linear + USL at free surfaces
+  /// (docs/mpm.md). GIMP and B-splines need none (grad w ~ sqrt(w) as w -> 0: bounded).
+  static constexpr double kSmallMassFraction = 1e-2;
+
   /// The CFL time step: cfl * dx_min / max(c + |v|) over all particles, capped by dt_max.
   [[nodiscard]] double stableTimeStep() const;
   /// One uncoupled step with dt = min(stableTimeStep, time left to `until`). Returns dt.
   double advance(double until = 1e300);
+  /// Node mass and velocity v_n from the particles as they are now (what particlesToGrid() gives),
+  /// without stepping: e.g. for output of the initial state. Collective.
+  void projectToGrid();
 
   // ---- phases (see the brief) ----------------------------------------------------------------
   void beginStep(double dt);
@@ -73,6 +84,11 @@ class MpmSolver {
   void cellLagrangianMomentum(int material, core::Field& out) const;
   /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity.
   void applyCellVelocityIncrement(int material, const core::Field& dv);
+  /// Adds per-cell forces on material m (owned cells, 3 components, e.g. ICE's pressure force)
+  /// to the external node force, shared among each cell's corner nodes in proportion to their
+  /// mass of m (the transpose of cellState's node-to-cell average; the total force is kept).
+  /// Call after cellState(m) and before updateGrid(). Collective.
+  void addCellForce(int material, const core::Field& force);
   void gridToParticles();
   void endStep();
 
@@ -102,10 +118,12 @@ class MpmSolver {
   double dt_ = 0, time_ = 0;
   long step_ = 0;
   double massFloor_ = 0;
+  double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
   int sortInterval_ = 20;
   // Cell state per material (built on demand) and its node masses.
   std::vector<std::unique_ptr<SolidCellState>> cellStates_;
   std::vector<core::Field> materialNodeMass_;
+  core::Field cellMomentum_, cellVolumeTemperature_;  // cellState() scratch (node momentum; V, m T)
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;

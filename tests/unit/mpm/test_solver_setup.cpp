@@ -159,6 +159,12 @@ TEST(Phases, CellStateConservesMass) {
   double m = 0;
   core::forEach(cs.mass.box(), [&](int i, int j, int k) { m += cs.mass(i, j, k); });
   EXPECT_NEAR(m, 500.0, 1e-9);
+  const double* storage = cs.mass.data();
+  const auto& again = solver.cellState(0);  // reuses its fields and scratch: same values, same storage
+  double m2 = 0;
+  core::forEach(again.mass.box(), [&](int i, int j, int k) { m2 += again.mass(i, j, k); });
+  EXPECT_EQ(m2, m);
+  EXPECT_EQ(again.mass.data(), storage);
   solver.computeInternalForces();
   solver.updateGrid();
   core::Field dv("dv", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);

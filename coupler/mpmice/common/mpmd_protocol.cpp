@@ -1,0 +1,48 @@
+#include "mpmice/common/mpmd_protocol.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "launch/timed_wait.h"
+
+namespace mpmice::coupler {
+
+HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
+  std::ostringstream mesh, mats;
+  mesh.precision(17);
+  mesh << s.mesh.describe() << " (origin " << s.mesh.origin()[0] << "," << s.mesh.origin()[1] << ","
+       << s.mesh.origin()[2] << ")";
+  for (const auto& m : s.materials)
+    mats << m.name << ":" << (m.kind == core::MaterialKind::Solid ? "solid " + m.constitutive.type : "fluid") << "/"
+         << m.eos.type << " ";
+  return {{"mesh", mesh.str()},
+          {"materials", mats.str()},
+          {"scene hash (mesh, materials, boundary)", core::sceneHash(s)},
+          {"schedule", s.coupling.schedule},
+          {"end time", std::to_string(s.time.end)},
+          {"exchanged fields",
+           "A: mass velocity temperature specific_volume | B: pressure_force | C: lagrangian_momentum | "
+           "D: exchange_momentum"}};
+}
+
+std::vector<double> tradeValues(const Participant& p, const std::vector<double>& mine, const std::string& what) {
+  std::vector<double> theirs(mine.size(), 0.0);
+  if (p.local().root()) {
+    std::vector<MPI_Request> reqs(2);
+    const int n = static_cast<int>(mine.size());
+    MPI_Irecv(theirs.data(), n, MPI_DOUBLE, 0, kTradeTag, p.inter(), &reqs[0]);
+    MPI_Isend(mine.data(), n, MPI_DOUBLE, 0, kTradeTag, p.inter(), &reqs[1]);
+    waitAll(reqs, p.timeout(), p.peerName(), what);
+  }
+  MPI_Bcast(theirs.data(), static_cast<int>(theirs.size()), MPI_DOUBLE, 0, p.local().raw());
+  return theirs;
+}
+
+double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene) {
+  const double theirs = tradeValues(p, {mine}, "time step")[0];
+  double dt = std::min({mine, theirs, scene.time.dt_max});
+  if (t + dt > scene.time.end) dt = scene.time.end - t;
+  return dt;
+}
+
+}  // namespace mpmice::coupler

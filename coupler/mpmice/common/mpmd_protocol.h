@@ -1,0 +1,26 @@
+#pragma once
+/// @brief What the two MPM-ICE participants agree on at start-up and every step of an MPMD launch.
+///
+/// Start-up: the handshake sections (mesh, materials, scene hash, schedule, exchanged fields).
+/// Every step: the time step (the smaller of both sides' stable steps) and whether to go on.
+/// At output times: the fluid's totals, so the solid side writes one conservation CSV for both.
+#include <vector>
+
+#include "launch/handshake.h"
+#include "launch/participant.h"
+#include "scene/scene.h"
+
+namespace mpmice::coupler {
+
+inline constexpr int kTradeTag = 31;
+
+/// The sections both participants must agree on.
+HandshakeSections mpmiceHandshakeSections(const core::Scene& scene);
+
+/// Leaders trade `mine` (same length on both sides); every local rank gets the peer's values.
+std::vector<double> tradeValues(const Participant& p, const std::vector<double>& mine, const std::string& what);
+
+/// Smaller of this side's and the peer's stable step, capped by dt_max and the time left.
+double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene);
+
+}  // namespace mpmice::coupler

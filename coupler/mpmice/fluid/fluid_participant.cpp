@@ -1,0 +1,54 @@
+#include "mpmice/fluid/fluid_participant.h"
+
+#include "exchange/cell_exchange.h"
+#include "mpmice/common/mpmd_protocol.h"
+#include "mpmice/common/run_output.h"
+#include "mpmice/fluid/fluid_side.h"
+#include "util/progress.h"
+
+namespace mpmice::coupler {
+
+int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
+  handshake(p, mpmiceHandshakeSections(scene));
+  ice::IceSolver ice(scene, p.local());
+  FluidSide side(ice, scene);
+  const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
+  const CellExchange ex(p, ice.decomposition(), peer);
+  auto& fields = side.fields();
+
+  core::Progress progress(log, p.local(), 0.0, scene.time.end, core::ProgressOptions{1e30, 0});
+  RunOutput out(scene, p.local(), ice.decomposition(), "_fluid", false);
+  auto output = [&](long n, double t) {
+    const std::vector<core::Field> f = ice.outputFields();
+    std::vector<const core::Field*> ptrs;
+    for (const auto& x : f) ptrs.push_back(&x);
+    out.writeFields(n, t, ptrs, nullptr);
+    tradeValues(p, side.totals().pack(), "totals");
+  };
+  double t = 0;
+  long n = 0;
+  if (out.due(t)) output(n, t);
+  while (t < scene.time.end * (1 - 1e-12)) {
+    const bool more = !(scene.time.max_steps > 0 && n >= scene.time.max_steps);
+    if (tradeValues(p, {more ? 1.0 : 0.0}, "go on")[0] == 0.0 || !more) break;
+    const double dt = agreeOnTimeStep(p, side.stableTimeStep(), t, scene);
+    for (std::size_t s = 0; s < fields.size(); ++s)
+      ex.receive(fields[s].a(), kTagA + 8 * int(s), "solid state of " + fields[s].name);
+    side.consumeAProduceB(dt);
+    for (std::size_t s = 0; s < fields.size(); ++s)
+      ex.send({&fields[s].pressureForce}, kTagB + 8 * int(s), "receipt of the pressure force on " + fields[s].name);
+    for (std::size_t s = 0; s < fields.size(); ++s)
+      ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
+    side.consumeCProduceD();
+    for (std::size_t s = 0; s < fields.size(); ++s)
+      ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments of " + fields[s].name);
+    side.finishStep();
+    t += dt;
+    ++n;
+    if (out.due(t)) output(n, t);
+  }
+  progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()), "cell-steps");
+  return 0;
+}
+
+}  // namespace mpmice::coupler

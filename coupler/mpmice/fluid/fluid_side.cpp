@@ -1,0 +1,45 @@
+#include "mpmice/fluid/fluid_side.h"
+
+namespace mpmice::coupler {
+
+FluidSide::FluidSide(ice::IceSolver& ice, const core::Scene& scene) : ice_(ice) {
+  for (int m : scene.solids()) fields_.emplace_back(m, scene.materials[m].name, ice.ownedBox());
+}
+
+void FluidSide::consumeAProduceB(double dt) {
+  for (auto& f : fields_)
+    ice_.setExternalMaterialState(f.material, all(f.mass), all(f.velocity), all(f.temperature),
+                                  all(f.specificVolume));
+  ice_.computeEquilibriumPressure();
+  ice_.beginStep(dt);
+  ice_.computeFaceVelocities();
+  ice_.computePressureIncrement();
+  ice_.computeFacePressure();
+  for (auto& f : fields_) {
+    const core::Field p = ice_.pressureForce(f.material);
+    f.pressureForce.copyRegion(p, f.pressureForce.box(), f.pressureForce.box());
+  }
+}
+
+void FluidSide::consumeCProduceD() {
+  ice_.computeSourcesAndLagrangian();
+  for (auto& f : fields_) ice_.setExternalLagrangianMomentum(f.material, all(f.lagrangianMomentum));
+  ice_.exchange();
+  for (auto& f : fields_) {
+    const core::Field& d = ice_.exchangeMomentum(f.material);
+    f.exchangeMomentum.copyRegion(d, f.exchangeMomentum.box(), f.exchangeMomentum.box());
+  }
+}
+
+void FluidSide::finishStep() { ice_.advectFluids(); }
+
+SideTotals FluidSide::totals() const {
+  const ice::Totals t = ice_.totals();
+  SideTotals s;
+  s.mass = t.mass;
+  s.momentum = t.momentum;
+  s.energy = t.energy;
+  return s;
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,40 @@
+#pragma once
+/// @brief The fluid (ICE) side of an MPM-ICE step, in the order of the monolithic-style schedule.
+///
+///   consumeAProduceB(dt)  the solids' cell state enters as external materials; equilibrium
+///                         pressure; face velocities; pressure increment; face pressure;
+///                         pressure force on each solid
+///   consumeCProduceD()    sources and Lagrangian values; the solids' Lagrangian momentum;
+///                         pointwise implicit exchange; exchange increments of each solid
+///   finishStep()          fluids advected (the solids advect themselves)
+#include <vector>
+
+#include "mpmice/common/exchange_fields.h"
+#include "mpmice/common/run_output.h"
+#include "solver/ice_solver.h"
+
+namespace mpmice::coupler {
+
+class FluidSide {
+ public:
+  FluidSide(ice::IceSolver& ice, const core::Scene& scene);
+
+  [[nodiscard]] double stableTimeStep() const { return ice_.stableTimeStep(); }
+  void consumeAProduceB(double dt);
+  void consumeCProduceD();
+  void finishStep();
+
+  [[nodiscard]] std::vector<SolidExchangeFields>& fields() { return fields_; }
+  [[nodiscard]] ice::IceSolver& solver() { return ice_; }
+  /// Mass, momentum and energy (internal + kinetic) of the fluids (collective).
+  [[nodiscard]] SideTotals totals() const;
+
+ private:
+  static std::span<const double> all(const core::Field& f) {
+    return {f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())};
+  }
+  ice::IceSolver& ice_;
+  std::vector<SolidExchangeFields> fields_;
+};
+
+}  // namespace mpmice::coupler
