@@ -1,8 +1,11 @@
-// mpm_solver: runs a solid-only scene with the explicit Material Point Method (uncoupled).
+// mpm_solver: runs a solid-only scene with the explicit Material Point Method, or the solid side
+// of an MPM-ICE run when started in one MPMD launch with ice_solver.
 //
 // Sample runs:  mpm_solver configs/mpm_vibrating_bar.yaml
 //               scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml
-// 1. Read and validate the scene (errors name file, line and key; exit 1).
+//               scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)
+// 1. Read and validate the scene (errors name file, line and key; exit 1); join the launch
+//    (coupler/launch/participant.h): with a peer, run the coupled solid side and stop there.
 // 2. Build the solver: decomposition over the ranks, particles from the geometry.
 // 3. Step to time.end with progress lines (core/util/progress.h). At t = 0, at every
 //    output.interval and at the last step (unless output.enabled is false): one HDF5 file of
@@ -15,6 +18,9 @@
 #include <memory>
 #include <string>
 
+#include "launch/participant.h"
+#include "launch/timed_wait.h"
+#include "mpmice/solid/solid_participant.h"
 #include "parallel/mpi_session.h"
 #include "scene/scene.h"
 #include "solver/mpm_output.h"
@@ -25,14 +31,16 @@ using namespace mpmice;
 
 int main(int argc, char** argv) {
   core::MpiSession session(argc, argv);
-  const core::Comm comm = session.world();
   if (argc != 2) {
-    if (comm.root()) std::fprintf(stderr, "usage: mpm_solver scene.yaml\n");
+    if (session.world().root()) std::fprintf(stderr, "usage: mpm_solver scene.yaml\n");
     return 2;
   }
   try {
-    // 1. Scene.
+    // 1. Scene and launch.
     const core::Scene scene = core::loadScene(argv[1]);
+    const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
+    if (participant.coupled()) return coupler::runSolidParticipant(participant, scene, std::cout);
+    const core::Comm comm = participant.local();
     // 2. Solver.
     mpm::MpmSolver solver(scene, comm);
     const long long np = solver.globalParticleCount();
@@ -88,9 +96,16 @@ int main(int argc, char** argv) {
     progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");
     if (comm.root())
       std::printf("  energy: kinetic %.6g, strain %.6g, total %.6g\n", e.kinetic, e.strain, e.total());
-  } catch (const std::exception& ex) {
-    if (comm.root()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+  } catch (const core::SceneError& ex) {
+    if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
     return 1;
+  } catch (const std::invalid_argument& ex) {  // bad input: every rank throws the same
+    if (session.world().root()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    return 1;
+  } catch (const std::exception& ex) {  // may be one rank only (a coupling timeout): end the launch
+    std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    std::fflush(stderr);
+    core::MpiSession::abortAll(1);
   }
   return 0;
 }
