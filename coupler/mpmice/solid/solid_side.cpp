@@ -19,6 +19,17 @@ void SolidSide::produceA() {
     f.velocity.copyRegion(s.velocity, b, b);
     f.temperature.copyRegion(s.temperature, b, b);
     f.specificVolume.copyRegion(s.specificVolume, b, b);
+    // Cells the solid does not reach: an absent material still needs a valid state for the
+    // equilibrium pressure (its volume fraction is zero): reference specific volume, its
+    // neighbours' temperature is not known here, so the scene's reference 300 K.
+    const double v0 = 1.0 / mpm_.scene().materials[f.material].density;
+    core::forEach(b, [&](int i, int j, int k) {
+      if (f.mass(i, j, k) > 0 && f.specificVolume(i, j, k) > 0) return;
+      f.mass(i, j, k) = 0.0;
+      for (int d = 0; d < 3; ++d) f.velocity(i, j, k, d) = 0.0;
+      f.specificVolume(i, j, k) = v0;
+      if (!(f.temperature(i, j, k) > 0)) f.temperature(i, j, k) = 300.0;
+    });
   }
 }
 
