@@ -15,7 +15,7 @@ packages=(
   libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
-  openfoam
+  openfoam openfoam-examples
 )
 
 missing=()

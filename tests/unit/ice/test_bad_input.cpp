@@ -1,0 +1,65 @@
+// Bad scene input gives clear errors: an EOS name that does not exist, a negative pressure or
+// density in an initial state, volume fractions that do not sum to one in a region, a bad option.
+#include <gtest/gtest.h>
+
+#include "../../verification/ice/ice_test_scenes.h"
+#include "test_comm.h"
+
+using namespace mpmice;
+
+namespace {
+
+std::string errorOf(const core::Scene& s) {
+  try {
+    ice::IceSolver solver(s, test::comm());
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+core::Scene base() { return test::shockTube(10, {1, 0, 1}, {0.125, 0, 0.1}, 0.5, 0.2); }
+
+}  // namespace
+
+TEST(IceBadInput, UnknownEosName) {
+  core::Scene s = base();
+  s.materials[0].eos.type = "perfect_gas";
+  const std::string m = errorOf(s);
+  EXPECT_NE(m.find("perfect_gas"), std::string::npos) << m;
+  EXPECT_NE(m.find("ideal_gas"), std::string::npos) << m;
+  EXPECT_NE(m.find("materials.gas.eos"), std::string::npos) << m;
+}
+
+TEST(IceBadInput, NegativePressure) {
+  core::Scene s = base();
+  s.geometry[1].pressure = -5.0;
+  const std::string m = errorOf(s);
+  EXPECT_NE(m.find("geometry.right.pressure"), std::string::npos) << m;
+  EXPECT_NE(m.find("-5"), std::string::npos) << m;
+}
+
+TEST(IceBadInput, NegativeDensity) {
+  core::Scene s = base();
+  s.geometry[0].density = -1.0;
+  const std::string m = errorOf(s);
+  EXPECT_NE(m.find("geometry.left.density"), std::string::npos) << m;
+}
+
+TEST(IceBadInput, FractionsThatDoNotSumToOne) {
+  core::Scene s = base();
+  s.materials.push_back(test::idealGas("helium", 1.67, 3116));
+  s.geometry[0].fill = {{"gas", 0.5}, {"helium", 0.3}};
+  const std::string m = errorOf(s);
+  EXPECT_NE(m.find("geometry.left.fill"), std::string::npos) << m;
+  EXPECT_NE(m.find("0.8"), std::string::npos) << m;
+}
+
+TEST(IceBadInput, UnknownOption) {
+  core::Scene s = base();
+  s.ice.advection = "third_order";
+  EXPECT_NE(errorOf(s).find("ice.advection"), std::string::npos);
+  s = base();
+  s.ice.limiter = "koren";
+  EXPECT_NE(errorOf(s).find("ice.limiter"), std::string::npos);
+}

@@ -1,0 +1,299 @@
+// Energy sources, heat exchange, inflow/outflow boundaries and the Mie-Gruneisen / JWL equations
+// of state in running scenes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "ice_test_scenes.h"
+#include "material/solid_bulk_eos.h"
+#include "test_comm.h"
+
+using namespace mpmice;
+
+TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
+  core::Scene s;
+  s.name = "heated";
+  s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, 0.1, 1}, {10, 10, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::SlipWall;
+  s.time.end = 1e-3;
+  s.materials = {test::idealGas("air")};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
+  core::SourceSpec src;
+  src.material = "air";
+  src.shape = test::box({0.3, 0.3, 0}, {0.7, 0.7, 1});  // 4 x 4 cells = 0.16 m^3 (unit depth)
+  src.power_density = 1e8;
+  src.start = 0;
+  src.end = 5e-4;
+  s.sources = {src};
+  ice::IceSolver sol(s, test::comm());
+  const double e0 = sol.totals().energy;
+  test::runToEnd(sol, s.time.end);
+  const double added = sol.totals().energy - e0;
+  std::printf("  energy added %.6e J (expected %.6e J)\n", added, 1e8 * 0.16 * 5e-4);
+  EXPECT_NEAR(added, 1e8 * 0.16 * 5e-4, 1e-9 * added);
+}
+
+TEST(IceExchange, HeatExchangeEqualisesTemperaturesAndConservesEnergy) {
+  core::Scene s;
+  s.name = "heat";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {4, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.materials = {test::idealGas("a", 1.4, 717.5), test::idealGas("b", 1.67, 3116)};
+  s.geometry = {test::region("all", test::box({0, 0, 0}, {1, 1, 1}), {{"a", 0.5}, {"b", 0.5}}, 1e5, 0.0)};
+  s.geometry[0].density.reset();
+  s.ice.exchange_heat = 1e15;
+  ice::IceSolver sol(s, test::comm());
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) { sol.state().mat[1].eint(i, j, k) *= 2.0; });
+  sol.computeEquilibriumPressure();
+  const double e0 = sol.totals().energy;
+  sol.step();
+  const auto& a = sol.state().mat[0];
+  const auto& b = sol.state().mat[1];
+  const double Ta = a.eos->temperature(1.0 / a.spvol(0, 0, 0), a.eint(0, 0, 0));
+  const double Tb = b.eos->temperature(1.0 / b.spvol(0, 0, 0), b.eint(0, 0, 0));
+  EXPECT_NEAR(Ta, Tb, 1e-8 * Ta);
+  EXPECT_NEAR(sol.totals().energy, e0, 1e-13 * e0);
+}
+
+TEST(IceBoundaries, InflowAddsMassAtRhoUA) {
+  core::Scene s;
+  s.name = "inflow";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.01, 1, 1}, {100, 1, 1});
+  s.boundary[0].type = core::BoundaryType::Inflow;
+  s.boundary[0].velocity = {50, 0, 0};
+  s.boundary[0].density = 1.2;
+  s.boundary[0].pressure = 1e5;
+  s.boundary[1].type = core::BoundaryType::Outflow;
+  s.boundary[1].pressure = 1e5;
+  s.time.end = 1e-3;
+  s.materials = {test::idealGas("air")};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2, {50, 0, 0})};
+  ice::IceSolver sol(s, test::comm());
+  const double m0 = sol.totals().mass;
+  test::runToEnd(sol, s.time.end);
+  // Uniform flow through: inflow = outflow, the state stays uniform.
+  EXPECT_NEAR(sol.totals().mass, m0, 1e-9 * m0);
+  double du = 0;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    du = std::max(du, std::abs(sol.state().mat[0].vel(i, j, k, 0) - 50.0));
+  });
+  EXPECT_LT(du, 1e-6);
+}
+
+TEST(IceEos, MieGruneisenWaterAndJwlProductsRun) {
+  core::Scene s;
+  s.name = "blast_in_water";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.0025, 1, 1}, {400, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Outflow;
+  s.time.end = 50e-6;
+  core::MaterialSpec water;
+  water.name = "water";
+  water.eos.type = "mie_gruneisen";
+  water.eos.params = {{"reference_density", 998}, {"sound_speed", 1483}, {"slope", 1.75}, {"gruneisen", 0.28},
+                      {"reference_pressure", 1e5}};
+  water.specific_heat = 4186;
+  core::MaterialSpec tnt;
+  tnt.name = "products";
+  tnt.eos.type = "jwl";
+  tnt.eos.params = {{"A", 371.2e9}, {"B", 3.231e9}, {"R1", 4.15}, {"R2", 0.95}, {"omega", 0.3},
+                    {"reference_density", 1630}};
+  tnt.specific_heat = 1000;
+  s.materials = {water, tnt};
+  s.geometry = {test::region("water", test::box({0, 0, 0}, {1, 1, 1}), {{"water", 1.0}}, 1e5, 998),
+                test::region("charge", test::box({0, -1, -1}, {0.1, 2, 2}), {{"products", 1.0}}, 2e9, 1630)};
+  ice::IceSolver sol(s, test::comm());
+  test::runToEnd(sol, s.time.end);
+  double shock = 0, minP = 1e300;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    minP = std::min(minP, sol.pressure()(i, j, k));
+    if (sol.pressure()(i, j, k) > 1e7) shock = sol.mesh().cellCenter(0, i);
+  });
+  const double speed = (shock - 0.1) / s.time.end;
+  std::printf("  %ld steps, water shock at %.4f m: mean speed %.0f m/s, min p %.3e\n", sol.steps(), shock, speed, minP);
+  // Mie-Gruneisen water may go into tension behind the products' rarefaction (no cavitation
+  // model); the run must stay finite and bounded.
+  EXPECT_TRUE(std::isfinite(minP));
+  EXPECT_GT(minP, -1e9);
+  EXPECT_GT(speed, 1483.0);  // a shock outruns sound
+  EXPECT_LT(speed, 4000.0);
+}
+
+// The coupling phases with an external (solid) material: the solid's cell state comes in before
+// the pressure, ICE returns the pressure force on it, takes its Lagrangian momentum and returns
+// the exchange increments. A steel block at rest in a gas that moves at 10 m/s: the equilibrium
+// pressure stays at the gas pressure, the exchange drags gas and steel to a common velocity, and
+// the increments balance the gas's momentum change. The steel fills 30% of the block's cells,
+// which hold gas as well: the equilibrium compresses the gas there to 1 / 0.7 of its pressure.
+TEST(IceExternal, CouplingPhasesWithASolidBlock) {
+  core::Scene s;
+  s.name = "external";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  core::MaterialSpec steel;
+  steel.name = "steel";
+  steel.kind = core::MaterialKind::Solid;
+  steel.eos.type = "solid_bulk";
+  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
+  steel.specific_heat = 450;
+  s.materials = {test::idealGas("air"), steel};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2, {10, 0, 0})};
+  ice::IceSolver sol(s, test::comm());
+  const auto& owned = sol.ownedBox();
+  const std::size_t n = static_cast<std::size_t>(owned.numPts());
+  const double V = sol.mesh().cellVolume();
+  const core::SolidBulkEos law(117e9, 101325, 8900);
+  const double v0 = 1.0 / law.density(1e5);
+  std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
+  core::forEach(owned, [&](int i, int j, int k) {
+    const double x = sol.mesh().cellCenter(0, i);
+    if (x > 0.4 && x < 0.6) mass[static_cast<std::size_t>(owned.index(i, j, k))] = 0.3 * V / v0;
+  });
+  sol.setExternalMaterialState(1, mass, vel, T, sv);
+  sol.computeEquilibriumPressure();
+  core::forEach(owned, [&](int i, int j, int k) {
+    const double x = sol.mesh().cellCenter(0, i);
+    const double expect = x > 0.4 && x < 0.6 ? 1e5 / 0.7 : 1e5;  // the steel barely compresses
+    EXPECT_NEAR(sol.pressure()(i, j, k), expect, 1e-4 * expect) << i;
+  });
+  sol.beginStep(1e-5);
+  sol.computeFaceVelocities();
+  sol.computePressureIncrement();
+  sol.computeFacePressure();
+  const core::Field force = sol.pressureForce(1);
+  EXPECT_EQ(force.box(), owned);
+  sol.computeSourcesAndLagrangian();
+  std::vector<double> mom(3 * n, 0.0);  // the solid stays at rest before the exchange
+  sol.setExternalLagrangianMomentum(1, mom);
+  sol.exchange();
+  const core::Field& dm = sol.exchangeMomentum(1);
+  double solidGain = 0, gasVelInBlock = 0;
+  core::forEach(owned, [&](int i, int j, int k) {
+    solidGain += dm(i, j, k, 0);
+    const double x = sol.mesh().cellCenter(0, i);
+    if (x > 0.45 && x < 0.55) gasVelInBlock = sol.state().mat[0].velL(i, j, k, 0);
+  });
+  EXPECT_GT(solidGain, 0.0);              // the gas pushes the steel along
+  EXPECT_LT(std::abs(gasVelInBlock), 1e-3);  // and is stopped by it (K = 1e15)
+  sol.advectFluids();
+  EXPECT_NEAR(sol.time(), 1e-5, 1e-18);
+}
+
+// Viscosity: a shear wave u_y = U sin(2 pi x) in a periodic box decays as exp(-nu k^2 t).
+TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
+  core::Scene s;
+  s.name = "shear_wave";
+  const int n = 16;
+  s.mesh = core::Mesh(2, {0, 0, 0}, {1.0 / n, 1.0 / n, 1}, {n, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.time.end = 0.25;
+  s.materials = {test::idealGas("air")};
+  s.materials[0].viscosity = 0.01;
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
+  ice::IceSolver sol(s, test::comm());
+  const double k = 2 * M_PI;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    sol.state().mat[0].vel(i, j, kk, 1) = std::sin(k * sol.mesh().cellCenter(0, i));
+  });
+  sol.computeEquilibriumPressure();
+  test::runToEnd(sol, s.time.end);
+  double num = 0, den = 0;  // projection on sin(k x)
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    const double sx = std::sin(k * sol.mesh().cellCenter(0, i));
+    num += sol.state().mat[0].vel(i, j, kk, 1) * sx;
+    den += sx * sx;
+  });
+  const double amp = test::comm().sum(num) / test::comm().sum(den);
+  // Discrete rate: the 3-point Laplacian's eigenvalue 4 sin^2(k dx / 2) / dx^2.
+  const double dx = 1.0 / n, nu = 0.01 / 1.2;
+  const double exact = std::exp(-nu * 4 * std::pow(std::sin(k * dx / 2), 2) / (dx * dx) * s.time.end);
+  std::printf("  amplitude %.6f, exact (discrete Laplacian) %.6f, continuous %.6f\n", amp, exact,
+              std::exp(-nu * k * k * s.time.end));
+  EXPECT_NEAR(amp, exact, 1e-3 * exact);
+}
+
+// The semi-implicit pressure with Eigen's BiCGSTAB gives the matrix-free CG's solution.
+TEST(IceSemiImplicit, BicgstabMatchesCg) {
+  const test::Primitive L{1, 0, 1}, R{0.125, 0, 0.1};
+  core::Scene a = test::shockTube(200, L, R, 0.5, 0.2, {"second_order", "semi_implicit"});
+  a.ice.solver_tolerance = 1e-13;
+  core::Scene b = a;
+  b.ice.linear_solver = "bicgstab";
+  ice::IceSolver sa(a, test::comm()), sb(b, test::comm());
+  test::runToEnd(sa, 0.2);
+  test::runToEnd(sb, 0.2);
+  double diff = 0;
+  core::forEach(sa.ownedBox(), [&](int i, int j, int k) {
+    diff = std::max(diff, std::abs(sa.density(0, i, j, k) - sb.density(0, i, j, k)));
+  });
+  EXPECT_EQ(sa.steps(), sb.steps());
+  EXPECT_LT(diff, 1e-9);
+}
+
+// Heat conduction: a temperature wave at uniform pressure decays at the constant-pressure rate
+// k / (rho cp) (not k / (rho cv): the acoustic time is 100 times shorter than the diffusion time,
+// so the gas expands as it heats); total energy is conserved.
+TEST(IceConduction, TemperatureWaveDecaysAndEnergyIsConserved) {
+  core::Scene s;
+  s.name = "thermal_wave";
+  const int n = 16;
+  const double L = 0.01;
+  s.mesh = core::Mesh(1, {0, 0, 0}, {L / n, 1, 1}, {n, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.time.end = 1.5e-3;
+  s.materials = {test::idealGas("air", 1.4, 717.5)};
+  s.materials[0].thermal_conductivity = 1.0;
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
+  ice::IceSolver sol(s, test::comm());
+  const double k = 2 * M_PI / L, V = sol.mesh().cellVolume();
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {  // T = T0 (1 + 0.01 sin kx) at p = 1e5
+    auto& m = sol.state().mat[0];
+    const double fac = 1.0 + 0.01 * std::sin(k * sol.mesh().cellCenter(0, i));
+    m.eint(i, j, kk) *= fac;
+    m.mass(i, j, kk) = 1.2 / fac * V;
+  });
+  sol.computeEquilibriumPressure();
+  const double e0 = sol.totals().energy;
+  auto amplitude = [&]() {
+    double num = 0, den = 0;
+    core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+      const auto& m = sol.state().mat[0];
+      const double sx = std::sin(k * sol.mesh().cellCenter(0, i));
+      num += m.eos->temperature(1.0 / m.spvol(i, j, kk), m.eint(i, j, kk)) * sx;
+      den += sx * sx;
+    });
+    return test::comm().sum(num) / test::comm().sum(den);
+  };
+  const double a0 = amplitude();
+  test::runToEnd(sol, s.time.end);
+  const double ratio = amplitude() / a0;
+  const double dx = L / n, lap = 4 * std::pow(std::sin(k * dx / 2), 2) / (dx * dx);
+  const double rateV = 1.0 / (1.2 * 717.5) * lap, rateP = 1.0 / (1.2 * 1004.5) * lap;
+  std::printf("  amplitude ratio %.4f; constant-volume %.4f, constant-pressure %.4f\n", ratio,
+              std::exp(-rateV * s.time.end), std::exp(-rateP * s.time.end));
+  EXPECT_NEAR(ratio, std::exp(-rateP * s.time.end), 2e-3);  // measured 0.6156 against 0.6157
+  EXPECT_NEAR(sol.totals().energy, e0, 1e-12 * e0);
+}
+
+// Gravity: a periodic box falls freely: every velocity is g t, the pressure stays uniform.
+TEST(IceGravity, PeriodicBoxFallsFreely) {
+  core::Scene s;
+  s.name = "free_fall";
+  s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, 0.1, 1}, {8, 8, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.time.end = 0.01;
+  s.gravity = {0, -9.81, 0};
+  s.materials = {test::idealGas("air"), test::stiffenedGas("water", 4.4, 6e8)};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2),
+                test::region("drop", test::box({0.3, 0.3, 0}, {0.5, 0.6, 1}), {{"water", 1.0}}, 1e5, 1000)};
+  ice::IceSolver sol(s, test::comm());
+  test::runToEnd(sol, s.time.end);
+  double du = 0, dp = 0;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    dp = std::max(dp, std::abs(sol.pressure()(i, j, k) - 1e5) / 1e5);
+    for (int r = 0; r < 2; ++r)
+      if (sol.state().mat[r].mass(i, j, k) > 0) du = std::max(du, std::abs(sol.state().mat[r].vel(i, j, k, 1) + 9.81 * 0.01));
+  });
+  EXPECT_LT(du, 1e-10);
+  EXPECT_LT(dp, 1e-10);
+}
