@@ -1,4 +1,6 @@
-// ice_solver: runs a fluid-only scene with multi-material ICE, uncoupled.
+// ice_solver: runs a fluid-only scene with multi-material ICE, or the fluid side of an MPM-ICE
+// run when started in one MPMD launch with mpm_solver
+// (scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml).
 //
 // Sample runs:
 //   ice_solver configs/ice_sod.yaml
@@ -17,6 +19,8 @@
 #include "io/output_writer.h"
 #include "parallel/mpi_session.h"
 #include "scene/scene.h"
+#include "launch/participant.h"
+#include "mpmice/fluid/fluid_participant.h"
 #include "solver/ice_solver.h"
 #include "util/progress.h"
 
@@ -24,14 +28,16 @@ using namespace mpmice;
 
 int main(int argc, char** argv) {
   core::MpiSession session(argc, argv);
-  const core::Comm comm = session.world();
   if (argc != 2) {
-    if (comm.root()) std::cerr << "usage: ice_solver scene.yaml\n";
+    if (session.world().root()) std::cerr << "usage: ice_solver scene.yaml\n";
     return 2;
   }
   try {
-    // 1. The scene.
+    // 1. The scene; join the launch: with a peer (mpm_solver), run the coupled fluid side.
     const core::Scene scene = core::loadScene(argv[1]);
+    const auto participant = coupler::Participant::join(session.world(), "ice", scene.coupling.timeout);
+    if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
+    const core::Comm comm = participant.local();
     if (!scene.solids().empty() && comm.root())
       std::cout << "note: the scene has solid materials; ice_solver alone treats them as absent external "
                    "materials (run the coupler for MPM-ICE)\n";
@@ -90,9 +96,15 @@ int main(int argc, char** argv) {
     // 5. Summary.
     progress.finish(static_cast<int>(solver.steps()), solver.time(), double(scene.mesh.numCells()), "cell-steps");
     if (comm.root() && writer) std::cout << "output     " << writer->xdmfPath() << "\n";
-  } catch (const std::exception& e) {
-    if (comm.root()) std::cerr << "ice_solver: error: " << e.what() << "\n";
+  } catch (const core::SceneError& e) {
+    if (session.world().root()) std::cerr << e.what() << "\n";
     return 1;
+  } catch (const std::invalid_argument& e) {  // bad input: every rank throws the same
+    if (session.world().root()) std::cerr << "ice_solver: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {  // may be one rank only (a coupling timeout): end the launch
+    std::cerr << "ice_solver: error: " << e.what() << std::endl;
+    core::MpiSession::abortAll(1);
   }
   return 0;
 }

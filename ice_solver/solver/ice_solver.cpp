@@ -116,6 +116,29 @@ void IceSolver::setExternalMaterialState(int material, std::span<const double> m
   });
 }
 
+void IceSolver::fitFluidsToExternalVolume() {
+  const double V = mesh_.cellVolume();
+  forEach(owned_, [&](int i, int j, int k) {
+    // Fluids at the scene's initial pressure of the cell (their micro density from the EOS).
+    const double p0 = initialPressure_(i, j, k);
+    double vext = 0, vfluid = 0;
+    for (const MaterialState& m : st_.mat) {
+      if (m.external) {
+        vext += m.mass(i, j, k) * m.spvol(i, j, k);
+        continue;
+      }
+      const double rho = m.eos->density(p0, m.eint(i, j, k));
+      if (rho > 0) vfluid += m.mass(i, j, k) / rho;
+    }
+    if (!(vfluid > 0)) return;
+    const double vfree = std::max(V - vext, kMinFreeFraction * V);
+    const double scale = vfree / vfluid;
+    for (MaterialState& m : st_.mat)
+      if (!m.external) m.mass(i, j, k) *= scale;
+  });
+  fillMaterialGhosts(false);
+}
+
 void IceSolver::setExternalLagrangianMomentum(int material, std::span<const double> momentum) {
   MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
   const std::size_t n = static_cast<std::size_t>(owned_.numPts());

@@ -52,6 +52,12 @@ class IceSolver {
   // ---- phases (see the brief above)
   void setExternalMaterialState(int material, std::span<const double> mass, std::span<const double> velocity,
                                 std::span<const double> temperature, std::span<const double> specificVolume);
+  /// Once, at the start of a coupled run, after every external material's first state: scales
+  /// each fluid's mass in every cell so that the fluids, at their initial micro state, fill
+  /// exactly the volume the solids leave free (V - sum m_e v_e; a trace where the solids fill
+  /// the cell). The solids' node-to-cell mass smears their surface over neighbouring cells; this
+  /// starts the fluids in pressure equilibrium with that smeared surface.
+  void fitFluidsToExternalVolume();
   void computeEquilibriumPressure();
   void beginStep(double dt);
   void computeFaceVelocities();
@@ -93,6 +99,10 @@ class IceSolver {
   void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
   void fillMaterialGhosts(bool lagrangian);
   void solveSemiImplicit();
+  /// Pressure of cells the solids fill (no free volume for fluids): the dominant solid's EOS.
+  void solidFilledPressure(const std::vector<std::size_t>& filled, const std::vector<std::vector<double>>& vext);
+  /// Free volume below which a cell counts as filled by solids.
+  static constexpr double kMinFreeFraction = 1e-9;
   void explicitIncrement();
   /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
   void divergence();
@@ -124,6 +134,7 @@ class IceSolver {
   long nsteps_ = 0, fallbacks_ = 0;
   std::array<InflowState, 6> inflow_{};
   std::vector<std::vector<double>> acc_;  // advection accumulators (scratch)
+  core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
   std::vector<std::array<core::Field, 3>> faceFlux_;  // advection face fluxes per material (scratch)
   core::Field outScale_;                  // positivity scale of each donor's outflow, per material
 };

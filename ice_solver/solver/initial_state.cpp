@@ -12,6 +12,9 @@ namespace mpmice::ice {
 
 namespace {
 
+/// Volume fraction of each fluid left in cells that a solid object covers.
+constexpr double kTraceFraction = 1e-10;
+
 std::string num(double v) {
   std::ostringstream os;
   os << v;
@@ -41,6 +44,7 @@ void IceSolver::initialize(const core::Scene& scene) {
   owned_ = decomp_.cellBox(comm_.rank());
   const core::Box stored = decomp_.storedBox(comm_.rank(), core::Centering::Cell, kGhost);
   ghosts_ = std::make_unique<core::GhostExchange>(decomp_, comm_, core::Centering::Cell, kGhost);
+  initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
 
   // ---- options
   const core::IceOptions& o = scene.ice;
@@ -189,7 +193,10 @@ void IceSolver::initialize(const core::Scene& scene) {
         m.eint(i, j, k) = m.eos->cv() * 300.0;
         continue;
       }
-      double frac = 0, rho = bg[r].rho, e = bg[r].e;
+      // A cell inside a solid still holds a trace of each fluid (volume fraction kTraceFraction at
+      // the background state): the equilibrium pressure of a cell the solid fills only partly
+      // (its surface layer) then has a root, and no fluid has zero mass anywhere.
+      double frac = inSolid ? kTraceFraction : 0.0, rho = bg[r].rho, e = bg[r].e;
       if (reg)
         for (const core::FillSpec& f : reg->fill)
           if (f.material == m.name && !inSolid) {
@@ -202,6 +209,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       m.theta(i, j, k) = frac;
     }
     st_.press(i, j, k) = reg ? *reg->pressure : fluidRegions.empty() ? 101325.0 : *fluidRegions.front()->pressure;
+    initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 
   // ---- boundaries

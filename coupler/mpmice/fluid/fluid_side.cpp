@@ -10,6 +10,8 @@ void FluidSide::consumeAProduceB(double dt) {
   for (auto& f : fields_)
     ice_.setExternalMaterialState(f.material, all(f.mass), all(f.velocity), all(f.temperature),
                                   all(f.specificVolume));
+  if (!started_) ice_.fitFluidsToExternalVolume();
+  started_ = true;
   ice_.computeEquilibriumPressure();
   ice_.beginStep(dt);
   ice_.computeFaceVelocities();

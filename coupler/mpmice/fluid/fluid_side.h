@@ -1,7 +1,8 @@
 #pragma once
 /// @brief The fluid (ICE) side of an MPM-ICE step, in the order of the monolithic-style schedule.
 ///
-///   consumeAProduceB(dt)  the solids' cell state enters as external materials; equilibrium
+///   consumeAProduceB(dt)  the solids' cell state enters as external materials (the first time,
+///                         the fluids are fitted to the volume the solids leave free); equilibrium
 ///                         pressure; face velocities; pressure increment; face pressure;
 ///                         pressure force on each solid
 ///   consumeCProduceD()    sources and Lagrangian values; the solids' Lagrangian momentum;
@@ -35,6 +36,7 @@ class FluidSide {
   }
   ice::IceSolver& ice_;
   std::vector<SolidExchangeFields> fields_;
+  bool started_ = false;  // the first step fits the fluids to the solids' volume
 };
 
 }  // namespace mpmice::coupler
