@@ -1,6 +1,8 @@
 #include "mpmice/common/mpmd_protocol.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "launch/timed_wait.h"
@@ -36,6 +38,18 @@ std::vector<double> tradeValues(const Participant& p, const std::vector<double>&
   }
   MPI_Bcast(theirs.data(), static_cast<int>(theirs.size()), MPI_DOUBLE, 0, p.local().raw());
   return theirs;
+}
+
+void maybeInjectFault(const Participant& p, long step) {
+  static const char* spec = std::getenv("MPMICE_FAULT_EXIT");
+  if (!spec) return;
+  const std::string s(spec);
+  const auto colon = s.find(':');
+  if (colon == std::string::npos || s.substr(0, colon) != p.name()) return;
+  if (std::atol(s.c_str() + colon + 1) != step) return;
+  std::fprintf(stderr, "%s: MPMICE_FAULT_EXIT: exiting abruptly after step %ld\n", p.name().c_str(), step);
+  std::fflush(stderr);
+  std::_Exit(9);
 }
 
 double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene) {

@@ -20,6 +20,11 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& scene);
 /// Leaders trade `mine` (same length on both sides); every local rank gets the peer's values.
 std::vector<double> tradeValues(const Participant& p, const std::vector<double>& mine, const std::string& what);
 
+/// Fault injection for the launch tests: when the environment sets MPMICE_FAULT_EXIT=<name>:<step>,
+/// the participant called <name> ("mpm" or "ice") exits abruptly (status 9, no MPI_Finalize) after
+/// that step, as a crashed program would.
+void maybeInjectFault(const Participant& p, long step);
+
 /// Smaller of this side's and the peer's stable step, capped by dt_max and the time left.
 double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene);
 

@@ -45,6 +45,7 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
     side.finishStep();
     t += dt;
     ++n;
+    maybeInjectFault(p, n);
     if (out.due(t)) output(n, t);
   }
   progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()), "cell-steps");

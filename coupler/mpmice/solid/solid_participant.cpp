@@ -71,6 +71,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
     lap(compute);
     t += dt;
     ++n;
+    maybeInjectFault(p, n);
     if (steps) steps->row({double(n), t, dt, 1.0, compute, exchange});
     if (out.due(t)) output(n, t);
     progress.step(static_cast<int>(n), t, dt, {{"iters", 1}});
