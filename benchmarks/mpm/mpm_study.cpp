@@ -3,10 +3,13 @@
 // Sample runs:  build/benchmarks/mpm/mpm_study bar
 //               build/benchmarks/mpm/mpm_study lame [linear|gimp|bspline2|bspline3 ...]
 //               build/benchmarks/mpm/mpm_study lame_layers [shapes]   (where the Lame error sits)
+//               build/benchmarks/mpm/mpm_study lame_bands [shapes]    (error by distance from the surfaces)
 //               build/benchmarks/mpm/mpm_study disks
 //               scripts/mpirun -np 4 build/benchmarks/mpm/mpm_study lame gimp
 // 1. bar:   vibrating bar, 4 resolutions per shape function: v_cm error, energy drift, order.
 // 2. lame:  Lame cylinder, dx = 0.05 ... 0.00625: Eq. 13 error and order per shape function.
+//           Env: LAME_COARSE=1 (3 grids), LAME_DX, LAME_PPC (2), LAME_END (4e-3), LAME_DAMP (1e4),
+//           LAME_RAMP (1e-3), LAME_FLIP, LAME_UPDATE.
 // 3. disks: colliding disks, energy over the collision per update scheme (FLIP and PIC).
 #include <chrono>
 #include <cmath>
@@ -25,6 +28,13 @@ namespace pr = mpmice::mpm::problems;
 namespace {
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Lame grid spacings: the four of the study, LAME_COARSE = the test's three, LAME_DX = one.
+std::vector<double> lameSpacings(std::vector<double> dxs) {
+  if (const char* e = std::getenv("LAME_DX")) dxs = {std::atof(e)};
+  if (std::getenv("LAME_COARSE")) dxs = {0.05, 0.025, 0.0125};
+  return dxs;
 }
 }  // namespace
 
@@ -61,16 +71,17 @@ int main(int argc, char** argv) {
     } else if (what == "lame") {
       // 2. Lame cylinder.
       if (root) std::printf("| shape | dx | particles | steps | Eq. 13 error | order | wall [s] |\n|---|---|---|---|---|---|---|\n");
-      std::vector<double> dxs = {0.05, 0.025, 0.0125, 0.00625};
-      if (const char* e = std::getenv("LAME_DX")) dxs = {std::atof(e)};
-      if (std::getenv("LAME_COARSE")) dxs = {0.05, 0.025, 0.0125};  // the test's three grids
+      const std::vector<double> dxs = lameSpacings({0.05, 0.025, 0.0125, 0.00625});
       for (const auto& sh : shapes) {
         std::vector<double> hs, es;
         for (double dx : dxs) {
           const auto t0 = std::chrono::steady_clock::now();
           auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
-          const auto r = pr::runLame(pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 2.5e-3),
-                                                   env("LAME_DAMP", 5000), static_cast<int>(env("LAME_PPC", 2))), comm);
+          auto scene = pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 4.0e-3),
+                                     env("LAME_DAMP", 1.0e4), static_cast<int>(env("LAME_PPC", 2)));
+          scene.mpm.flip = env("LAME_FLIP", scene.mpm.flip);
+          if (const char* u = std::getenv("LAME_UPDATE")) scene.mpm.update = u;
+          const auto r = pr::runLame(scene, comm);
           hs.push_back(dx);
           es.push_back(r.error);
           const std::string order = hs.size() > 1 ? std::to_string(pr::observedOrder(
@@ -87,10 +98,10 @@ int main(int argc, char** argv) {
       //     free-surface layer (one particle layer each) and the interior, as shares of the total.
       if (root) std::printf("| shape | dx | Eq. 13 error | inner layer | outer layer | interior | interior mean bias | interior within 2 dx of the symmetry planes |\n|---|---|---|---|---|---|---|---|\n");
       for (const auto& sh : shapes)
-        for (double dx : {0.05, 0.025, 0.0125}) {
+        for (double dx : lameSpacings({0.05, 0.025, 0.0125})) {
           auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
           const int ppc = static_cast<int>(env("LAME_PPC", 2));
-          const auto scene = pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 2.5e-3), env("LAME_DAMP", 5000), ppc);
+          const auto scene = pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 4.0e-3), env("LAME_DAMP", 1.0e4), ppc);
           MpmSolver solver(scene, comm);
           while (solver.time() < scene.time.end * (1 - 1e-12)) solver.advance(scene.time.end);
           pr::Lame l;
@@ -110,6 +121,35 @@ int main(int argc, char** argv) {
             std::printf("| %s | %g | %.4f | %.4f | %.4f | %.4f | %+.4f | %.4f |\n", sh.c_str(), dx, (acc[0] + acc[1] + acc[2]) / n,
                         acc[0] / n, acc[1] / n, acc[2] / n, acc[3] / n, acc[4] / n);
         }
+    } else if (what == "lame_bands") {
+      // 2c. Eq. 13 sum by distance from the nearer curved surface, in cells: [0,1) [1,2) [2,4)
+      //     [4,8) [8,...) dx, with the signed mean of each band.
+      if (root) std::printf("| shape | dx | Eq. 13 error | 0-1 dx | 1-2 dx | 2-4 dx | 4-8 dx | >= 8 dx | mean bias >= 8 dx |\n|---|---|---|---|---|---|---|---|---|\n");
+      for (const auto& sh : shapes)
+        for (double dx : lameSpacings({0.05, 0.025, 0.0125})) {
+          auto env = [](const char* k, double d) { const char* v = std::getenv(k); return v ? std::atof(v) : d; };
+          const auto scene = pr::lameScene(dx, sh, env("LAME_RAMP", 1e-3), env("LAME_END", 4.0e-3), env("LAME_DAMP", 1.0e4),
+                                           static_cast<int>(env("LAME_PPC", 2)));
+          MpmSolver solver(scene, comm);
+          while (solver.time() < scene.time.end * (1 - 1e-12)) solver.advance(scene.time.end);
+          pr::Lame l;
+          const auto& p = solver.particles();
+          std::vector<double> acc(6, 0.0);
+          for (std::size_t i = 0; i < p.size(); ++i) {
+            const double r = std::hypot(p.x[0][i], p.x[1][i]);
+            const double e = (p.stress[kXX][i] + p.stress[kYY][i] - l.sumExact()) / l.sumExact();
+            const double t = std::min(r - l.ri, l.ro - r) / dx;
+            const int bin = t < 1 ? 0 : t < 2 ? 1 : t < 4 ? 2 : t < 8 ? 3 : 4;
+            acc[bin] += std::fabs(e);
+            if (bin == 4) acc[5] += e;
+          }
+          comm.sumInPlace(acc);
+          const double n = static_cast<double>(solver.globalParticleCount());
+          if (root)
+            std::printf("| %s | %g | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %+.4f |\n", sh.c_str(), dx,
+                        (acc[0] + acc[1] + acc[2] + acc[3] + acc[4]) / n, acc[0] / n, acc[1] / n, acc[2] / n, acc[3] / n,
+                        acc[4] / n, acc[5] / n);
+        }
     } else if (what == "disks") {
       // 3. Colliding disks.
       if (root) std::printf("| update | flip | E(0) [J/m] | min E | max E | E(end) | change | KE min |\n|---|---|---|---|---|---|---|---|\n");
@@ -128,7 +168,7 @@ int main(int argc, char** argv) {
                         100 * (e1 - e0) / e0, kmin);
         }
     } else {
-      if (root) std::fprintf(stderr, "mpm_study: unknown study '%s'; valid: bar, lame, lame_layers, disks\n", what.c_str());
+      if (root) std::fprintf(stderr, "mpm_study: unknown study '%s'; valid: bar, lame, lame_layers, lame_bands, disks\n", what.c_str());
       return 2;
     }
   } catch (const std::exception& e) {

@@ -13,50 +13,36 @@ using core::forEach;
 void IceSolver::computeEquilibriumPressure() {
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
-  // External (solid) materials bring their own volume: mass x the specific volume the solid
-  // supplied (its particles' volume). The fluids share the rest of the cell, V_free, and the
-  // pressure is the root of sum_fluids m_f v_f(p) = V_free. A cell the solids fill (V_free below
-  // kMinFreeFraction V) takes the pressure of its dominant solid's EOS at that specific volume.
-  // So smeared solid mass never turns into artificial compression, and a solid surface cell
-  // whose fluid share is a trace still has a root.
-  const std::size_t no = ownedCells_.size();
-  std::vector<double> vfree(no, V);
-  std::vector<std::int64_t> solveCells;
-  std::vector<std::size_t> filled;
-  std::vector<std::vector<double>> vext(static_cast<std::size_t>(nm));
+  // External (solid) materials enter with the volume their particles occupy, m_e v_e (v_e as
+  // supplied), and stay compressible about it through their EOS. The node-to-cell average smears
+  // a solid's mass, so m_e v_e can exceed the cell near its surface; the solids' mass is then
+  // clipped to what fits (kMaxSolidFraction of the cell), so the smearing never turns into
+  // compression. In a cell the solids fill, the trace of fluid left makes the pressure the
+  // solid's own, continuously with the mixed cells around it.
+  std::vector<double> clip(anyExternal_ ? ownedCells_.size() : 0, 1.0);
   if (anyExternal_) {
-    for (int r = 0; r < nm; ++r) {
-      const MaterialState& m = st_.mat[r];
-      if (!m.external) continue;
-      auto& ve = vext[r];
-      ve.resize(no);
-      for (std::size_t a = 0; a < no; ++a) {
-        const std::int64_t c = ownedCells_[a];
-        ve[a] = m.spvol.data()[c];
-        vfree[a] -= m.mass.data()[c] * ve[a];
-      }
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      const std::int64_t c = ownedCells_[a];
+      double vext = 0;
+      for (const MaterialState& m : st_.mat)
+        if (m.external) vext += m.mass.data()[c] * m.spvol.data()[c];
+      if (vext > kMaxSolidFraction * V) clip[a] = kMaxSolidFraction * V / vext;
     }
-    solveCells.reserve(no);
-    for (std::size_t a = 0; a < no; ++a)
-      if (vfree[a] > kMinFreeFraction * V) solveCells.push_back(ownedCells_[a]);
-      else filled.push_back(a);
   }
   std::vector<const double*> rho, e;
   std::vector<double*> rhoMicro;
-  for (MaterialState& m : st_.mat) {  // theta holds m/V_free and spvol the micro density meanwhile
+  for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile
     double* th = m.theta.data();
     const double* ms = m.mass.data();
-    for (std::size_t a = 0; a < no; ++a) {
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
       const std::int64_t c = ownedCells_[a];
-      th[c] = m.external ? 0.0 : ms[c] / vfree[a];
+      th[c] = ms[c] / V * (m.external ? clip[a] : 1.0);
     }
     rho.push_back(th);
     e.push_back(m.eint.data());
     rhoMicro.push_back(m.spvol.data());
   }
-  const auto failures =
-      equil_->solve(anyExternal_ ? solveCells : ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data());
-  if (anyExternal_) solidFilledPressure(filled, vext);
+  const auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data());
   const int anyFail = comm_.max(failures.empty() ? 0 : 1);
   if (anyFail) {
     std::ostringstream os;
@@ -92,7 +78,6 @@ void IceSolver::computeEquilibriumPressure() {
     ea.resize(ownedCells_.size());
     c2.resize(ownedCells_.size());
     for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      if (m.external) sv[ownedCells_[a]] = 1.0 / vext[&m - st_.mat.data()][a];  // supplied density
       ra[a] = sv[ownedCells_[a]];
       ea[a] = en[ownedCells_[a]];
     }
@@ -105,19 +90,7 @@ void IceSolver::computeEquilibriumPressure() {
       ka[c] = 1.0 / (rm * c2[a]);
     }
   }
-  if (anyExternal_) {  // volume fractions from each material's volume m v
-    for (std::size_t a = 0; a < no; ++a) {
-      const std::int64_t c = ownedCells_[a];
-      double sum = 0;
-      for (MaterialState& m : st_.mat) {
-        double& th = m.theta.data()[c];
-        th = m.mass.data()[c] * m.spvol.data()[c] / V;  // fluids: sum m_f v_f(p) = V_free
-        sum += th;
-      }
-      if (sum > 1.0)  // solids overfill the cell (smeared mass): scale to fill it exactly
-        for (MaterialState& m : st_.mat) m.theta.data()[c] /= sum;
-    }
-  }
+
   double* pe = st_.pressEq.data();
   const double* p = st_.press.data();
   for (const std::int64_t c : ownedCells_) pe[c] = p[c];
@@ -170,29 +143,6 @@ void IceSolver::computePressureIncrement() {
   if (semiImplicit_) solveSemiImplicit();
   else explicitIncrement();
   fillGhosts({{&st_.press, FieldKind::Pressure}}, {-1});
-}
-
-void IceSolver::solidFilledPressure(const std::vector<std::size_t>& filled,
-                                    const std::vector<std::vector<double>>& vext) {
-  const int nm = numMaterials();
-  for (const std::size_t a : filled) {
-    const std::int64_t c = ownedCells_[a];
-    int dom = -1;
-    for (int r = 0; r < nm; ++r)
-      if (st_.mat[r].external && (dom < 0 || st_.mat[r].mass.data()[c] > st_.mat[dom].mass.data()[c])) dom = r;
-    const MaterialState& d = st_.mat[dom];
-    const double rhoS = 1.0 / vext[dom][a];
-    double p = 0;
-    d.eos->pressure(1, &rhoS, &d.eint.data()[c], &p);
-    st_.press.data()[c] = p;
-    st_.iters.data()[c] = 0;
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      double dd = 0;
-      m.eos->density(1, &p, &m.eint.data()[c], &m.spvol.data()[c], &dd);
-    }
-  }
 }
 
 }  // namespace mpmice::ice

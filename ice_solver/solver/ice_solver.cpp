@@ -131,7 +131,7 @@ void IceSolver::fitFluidsToExternalVolume() {
       if (rho > 0) vfluid += m.mass(i, j, k) / rho;
     }
     if (!(vfluid > 0)) return;
-    const double vfree = std::max(V - vext, kMinFreeFraction * V);
+    const double vfree = std::max(V - vext, (1.0 - kMaxSolidFraction) * V);
     const double scale = vfree / vfluid;
     for (MaterialState& m : st_.mat)
       if (!m.external) m.mass(i, j, k) *= scale;

@@ -99,10 +99,8 @@ class IceSolver {
   void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
   void fillMaterialGhosts(bool lagrangian);
   void solveSemiImplicit();
-  /// Pressure of cells the solids fill (no free volume for fluids): the dominant solid's EOS.
-  void solidFilledPressure(const std::vector<std::size_t>& filled, const std::vector<std::vector<double>>& vext);
-  /// Free volume below which a cell counts as filled by solids.
-  static constexpr double kMinFreeFraction = 1e-9;
+  /// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure.
+  static constexpr double kMaxSolidFraction = 1.0 - 1e-9;
   void explicitIncrement();
   /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
   void divergence();

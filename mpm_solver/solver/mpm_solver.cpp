@@ -65,8 +65,9 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   damping_ = scene_.mpm.damping;
   // 2. Decomposition, grid, boundary conditions.
   decomp_ = core::Decomposition(mesh, comm_.size());
-  // B-splines deposit on the node layer outside the mesh: on several ranks it is summed too.
-  const bool wide = shape_ == ShapeKind::BSpline2 || shape_ == ShapeKind::BSpline3;
+  // B-splines (and GIMP within lp of a face) deposit on the node layer outside the mesh: on
+  // several ranks it is summed too (beyond mirror planes it is folded inside first).
+  const bool wide = shape_ != ShapeKind::Linear;
   grid_ = std::make_unique<Grid>(decomp_, comm_, wide);
   bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
   // 3. Constitutive models of the solids.
@@ -251,7 +252,10 @@ void MpmSolver::particlesToGrid() {
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     kernels::particlesToGrid<S, D>(p_, 0, p_.size(), geom, mass, mom);
   });
+  bcs_.fold(g.mass, Parity::Scalar);
+  bcs_.fold(g.velocity, Parity::Vector);
   g.sumAndFill({&g.mass, &g.velocity});
+  bcs_.mirror(g.mass, Parity::Scalar);
   const std::int64_t n = g.numNodes();
   const int dim = scene_.mesh.dim();
   for (std::int64_t k = 0; k < n; ++k) {
@@ -305,6 +309,7 @@ void MpmSolver::computeInternalForces() {
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     kernels::internalForces<S, D>(p_, 0, p_.size(), geom, grav, loads, f);
   });
+  bcs_.fold(g.force, Parity::Vector);
   g.sumAndFill({&g.force});
 }
 
@@ -354,6 +359,7 @@ void MpmSolver::gridToParticles() {
       dispatch(shape_, dim, [&]<class S, int D>() {
         kernels::momentumToGrid<S, D>(p_, 0, np, geom, mom);
       });
+      bcs_.fold(g.remap, Parity::Vector);
       g.sumAndFill({&g.remap});
       const double* m = g.mass.data();
       for (int d = 0; d < dim; ++d)
@@ -510,6 +516,9 @@ const SolidCellState& MpmSolver::cellState(int material) {
       });
     }
   });
+  bcs_.fold(nm, Parity::Scalar);
+  bcs_.fold(mom, Parity::Vector);
+  bcs_.fold(vt, Parity::Scalar);
   g.sumAndFill({&nm, &mom, &vt});
   const core::Mesh& mesh = scene_.mesh;
   const int nc = 1 << dim;
@@ -595,6 +604,39 @@ void MpmSolver::addCellForce(int material, const Field& force) {
   });
   g.sumAndFill({&g.remap});
   for (int d = 0; d < dim; ++d) {
+    double* fe = g.externalForce.data(d);
+    const double* df = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
+  }
+}
+
+void MpmSolver::addCellPressureStress(const Field& pcell, double pRef) {
+  Grid& g = *grid_;
+  const core::Mesh& mesh = scene_.mesh;
+  const core::Box owned = decomp_.cellBox(comm_.rank());
+  g.remap.fill(0.0);
+  double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const GridGeom geom = g.geom();
+  dispatch(shape_, mesh.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      int c[3] = {0, 0, 0};
+      for (int d = 0; d < D; ++d)
+        c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
+                          owned.hi[d]);
+      const double s = p_.vol[i] * (pcell(c[0], c[1], c[2]) - pRef);
+      if (s == 0.0) continue;
+      st.compute(p_, i, geom);
+      st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
+        f[0][k] -= s * gx;
+        if (D > 1) f[1][k] -= s * gy;
+        if (D > 2) f[2][k] -= s * gz;
+      });
+    }
+  });
+  bcs_.fold(g.remap, Parity::Vector);
+  g.sumAndFill({&g.remap});
+  for (int d = 0; d < mesh.dim(); ++d) {
     double* fe = g.externalForce.data(d);
     const double* df = g.remap.data(d);
     for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];

@@ -89,6 +89,12 @@ class MpmSolver {
   /// mass of m (the transpose of cellState's node-to-cell average; the total force is kept).
   /// Call after cellState(m) and before updateGrid(). Collective.
   void addCellForce(int material, const core::Field& force);
+  /// The mean-stress correction of MPM-ICE: the internal force of every particle uses
+  /// sigma + (p_cell - pRef) I, p_cell the pressure of the particle's cell (owned cells), so
+  /// the pressure force the fluid side applies does not count the solid's mean stress twice.
+  /// Adds -sum_p V_p (p_cell - pRef) grad w_ip to the external node force. Call after
+  /// computeInternalForces() and before updateGrid(). Collective.
+  void addCellPressureStress(const core::Field& cellPressure, double pRef);
   void gridToParticles();
   void endStep();
 

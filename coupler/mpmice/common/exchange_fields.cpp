@@ -9,6 +9,7 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       temperature(n + "/temperature", core::Centering::Cell, owned, 1, 0),
       specificVolume(n + "/specific_volume", core::Centering::Cell, owned, 1, 0),
       pressureForce(n + "/pressure_force", core::Centering::Cell, owned, 3, 0),
+      pressure(n + "/pressure", core::Centering::Cell, owned, 1, 0),
       lagrangianMomentum(n + "/lagrangian_momentum", core::Centering::Cell, owned, 3, 0),
       exchangeMomentum(n + "/exchange_momentum", core::Centering::Cell, owned, 3, 0) {}
 

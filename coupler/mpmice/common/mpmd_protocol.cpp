@@ -23,7 +23,7 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
           {"schedule", s.coupling.schedule},
           {"end time", std::to_string(s.time.end)},
           {"exchanged fields",
-           "A: mass velocity temperature specific_volume | B: pressure_force | C: lagrangian_momentum | "
+           "A: mass velocity temperature specific_volume | B: pressure_force pressure | C: lagrangian_momentum | "
            "D: exchange_momentum"}};
 }
 

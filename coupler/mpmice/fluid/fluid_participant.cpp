@@ -36,7 +36,7 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
       ex.receive(fields[s].a(), kTagA + 8 * int(s), "solid state of " + fields[s].name);
     side.consumeAProduceB(dt);
     for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.send({&fields[s].pressureForce}, kTagB + 8 * int(s), "receipt of the pressure force on " + fields[s].name);
+      ex.send(std::as_const(fields[s]).b(), kTagB + 8 * int(s), "receipt of the pressure force on " + fields[s].name);
     for (std::size_t s = 0; s < fields.size(); ++s)
       ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
     side.consumeCProduceD();

@@ -20,6 +20,7 @@ void FluidSide::consumeAProduceB(double dt) {
   for (auto& f : fields_) {
     const core::Field p = ice_.pressureForce(f.material);
     f.pressureForce.copyRegion(p, f.pressureForce.box(), f.pressureForce.box());
+    f.pressure.copyRegion(ice_.pressure(), f.pressure.box(), f.pressure.box());
   }
 }
 

@@ -35,7 +35,7 @@ void MonolithicDriver::step(double dt) {
   solid_->produceA();
   for (std::size_t s = 0; s < sf.size(); ++s) copyAll(std::as_const(sf[s]).a(), ff[s].a());
   fluid_->consumeAProduceB(dt);
-  for (std::size_t s = 0; s < sf.size(); ++s) copyAll({&ff[s].pressureForce}, {&sf[s].pressureForce});
+  for (std::size_t s = 0; s < sf.size(); ++s) copyAll(std::as_const(ff[s]).b(), sf[s].b());
   solid_->consumeBProduceC();
   for (std::size_t s = 0; s < sf.size(); ++s) copyAll({&sf[s].lagrangianMomentum}, {&ff[s].lagrangianMomentum});
   fluid_->consumeCProduceD();

@@ -58,7 +58,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
     for (std::size_t s = 0; s < fields.size(); ++s)
       ex.send(std::as_const(fields[s]).a(), kTagA + 8 * int(s), "solid state of " + fields[s].name);
     for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.receive({&fields[s].pressureForce}, kTagB + 8 * int(s), "pressure force on " + fields[s].name);
+      ex.receive(fields[s].b(), kTagB + 8 * int(s), "pressure force on " + fields[s].name);
     lap(exchange);
     side.consumeBProduceC();
     lap(compute);

@@ -6,6 +6,9 @@ SolidSide::SolidSide(mpm::MpmSolver& mpm) : mpm_(mpm) {
   const core::Box owned = mpm.decomposition().cellBox(mpm.comm().rank());
   for (int m : mpm.scene().solids()) fields_.emplace_back(m, mpm.scene().materials[m].name, owned);
   dv_ = core::Field("dv", core::Centering::Cell, owned, 3, 0);
+  // The pressure at which the solids are stress-free: their EOS threshold (p(rho0) = p_ref).
+  if (!fields_.empty())
+    pRef_ = mpm.scene().materials[fields_.front().material].eos.get("threshold_pressure", 101325.0);
 }
 
 void SolidSide::beginStep(double dt) { mpm_.beginStep(dt); }
@@ -35,6 +38,7 @@ void SolidSide::produceA() {
 
 void SolidSide::consumeBProduceC() {
   mpm_.computeInternalForces();
+  if (!fields_.empty()) mpm_.addCellPressureStress(fields_.front().pressure, pRef_);
   for (auto& f : fields_) mpm_.addCellForce(f.material, f.pressureForce);
   mpm_.updateGrid();
   for (auto& f : fields_) mpm_.cellLagrangianMomentum(f.material, f.lagrangianMomentum);

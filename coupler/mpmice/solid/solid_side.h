@@ -2,7 +2,8 @@
 /// @brief The solid (MPM) side of an MPM-ICE step, in the order of the monolithic-style schedule.
 ///
 ///   beginStep(dt) + produceA()   particles to grid; cell mass, velocity, temperature, specific volume
-///   consumeB() + produceC()      internal forces + the fluid's pressure force; grid update;
+///   consumeB() + produceC()      internal forces with the mean-stress correction (sigma + (p - p_ref) I)
+///                                + the fluid's pressure force; grid update;
 ///                                cell Lagrangian momentum
 ///   consumeD() + finishStep()    exchange increments to the nodes; particles updated; migration
 /// The same object serves the in-process driver (mpmice) and the MPMD participant (mpm_solver):
@@ -37,6 +38,7 @@ class SolidSide {
   mpm::MpmSolver& mpm_;
   std::vector<SolidExchangeFields> fields_;
   core::Field dv_;  // scratch: velocity increments per cell
+  double pRef_ = 101325.0;
 };
 
 }  // namespace mpmice::coupler

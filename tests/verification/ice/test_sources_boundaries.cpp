@@ -179,6 +179,49 @@ TEST(IceExternal, CouplingPhasesWithASolidBlock) {
   EXPECT_NEAR(sol.time(), 1e-5, 1e-18);
 }
 
+// Solids smeared over cells by the node-to-cell average: a cell may receive more solid mass than
+// fits (m v0 > V). The equilibrium clips the solid to the cell, so the pressure stays the solid's
+// own (p_ref at its reference specific volume) instead of compressing it by the overfill (GPa).
+// Then the start-up fit: fluids scaled to fill the volume the solid leaves free at the scene's
+// pressure, so partly covered cells start at that pressure.
+TEST(IceExternal, OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolume) {
+  core::Scene s;
+  s.name = "overfull";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  core::MaterialSpec steel;
+  steel.name = "steel";
+  steel.kind = core::MaterialKind::Solid;
+  steel.eos.type = "solid_bulk";
+  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
+  steel.specific_heat = 450;
+  s.materials = {test::idealGas("air"), steel};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2)};
+  ice::IceSolver sol(s, test::comm());
+  const auto& owned = sol.ownedBox();
+  const std::size_t n = static_cast<std::size_t>(owned.numPts());
+  const double V = sol.mesh().cellVolume();
+  const double v0 = 1.0 / 8900.0;
+  std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
+  std::vector<double> share(n, 0.0);  // solid volume / cell volume per cell
+  core::forEach(owned, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned.index(i, j, k));
+    share[q] = i == 4 ? 1.3 : i == 5 ? 0.5 : 0.0;  // cell 4 overfilled, cell 5 half covered
+    mass[q] = share[q] * V / v0;
+  });
+  sol.setExternalMaterialState(1, mass, vel, T, sv);
+  sol.fitFluidsToExternalVolume();
+  sol.computeEquilibriumPressure();
+  core::forEach(owned, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned.index(i, j, k));
+    // Cell 4: the solid's own pressure at v0 (p_ref) up to the trace of air it squeezes;
+    // cell 5 and the open cells: the scene's pressure, the air having been fitted.
+    EXPECT_NEAR(sol.pressure()(i, j, k), 101325.0, 1e-3 * 101325.0) << "cell " << i << " share " << share[q];
+    const double thetaSolid = sol.state().mat[1].theta(i, j, k);
+    EXPECT_NEAR(thetaSolid, std::min(share[q], 1.0), 1e-6) << "cell " << i;
+  });
+}
+
 // Viscosity: a shear wave u_y = U sin(2 pi x) in a periodic box decays as exp(-nu k^2 t).
 TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
   core::Scene s;
