@@ -119,6 +119,19 @@ TEST(IceEos, MieGruneisenWaterAndJwlProductsRun) {
   EXPECT_LT(speed, 4000.0);
 }
 
+namespace {
+/// Steel as ICE sees a solid: an external material with the solid_bulk EOS.
+core::MaterialSpec externalSteel() {
+  core::MaterialSpec steel;
+  steel.name = "steel";
+  steel.kind = core::MaterialKind::Solid;
+  steel.eos.type = "solid_bulk";
+  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
+  steel.specific_heat = 450;
+  return steel;
+}
+}  // namespace
+
 // The coupling phases with an external (solid) material: the solid's cell state comes in before
 // the pressure, ICE returns the pressure force on it, takes its Lagrangian momentum and returns
 // the exchange increments. A steel block at rest in a gas that moves at 10 m/s: the equilibrium
@@ -130,12 +143,7 @@ TEST(IceExternal, CouplingPhasesWithASolidBlock) {
   s.name = "external";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  core::MaterialSpec steel;
-  steel.name = "steel";
-  steel.kind = core::MaterialKind::Solid;
-  steel.eos.type = "solid_bulk";
-  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
-  steel.specific_heat = 450;
+  const core::MaterialSpec steel = externalSteel();
   s.materials = {test::idealGas("air"), steel};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2, {10, 0, 0})};
   ice::IceSolver sol(s, test::comm());
@@ -189,12 +197,7 @@ TEST(IceExternal, OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolum
   s.name = "overfull";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  core::MaterialSpec steel;
-  steel.name = "steel";
-  steel.kind = core::MaterialKind::Solid;
-  steel.eos.type = "solid_bulk";
-  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
-  steel.specific_heat = 450;
+  const core::MaterialSpec steel = externalSteel();
   s.materials = {test::idealGas("air"), steel};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2)};
   ice::IceSolver sol(s, test::comm());
