@@ -549,7 +549,9 @@ class SchemaReader {
         const YamlMap cm = item.map();
         cm.allow({"field", "type", "limit", "strict"});
         ConvergenceSpec cs;
-        cs.field = cm.string("field");
+        cs.field = cm.required("field").choice(
+            {"exchange_momentum", "lagrangian_momentum", "pressure", "pressure_force", "solid_velocity"},
+            "exchanged field");
         cs.type = cm.choice("type", cs.type, {"absolute", "relative", "residual_relative"}, "convergence measure");
         cs.limit = cm.number("limit", cs.limit, Range::positive());
         cs.strict = cm.boolean("strict", cs.strict);

@@ -7,7 +7,9 @@
 // 2. Build both solvers on the same decomposition.
 // 3. Step to time.end: monolithic-style schedule, four in-memory exchange points per step.
 // 4. Output at each output time: HDF5/XDMF (fluid fields, particles), conservation CSV.
+#include <algorithm>
 #include <iostream>
+#include <memory>
 
 #include "mpmice/monolithic/monolithic_driver.h"
 #include "mpmice/common/run_output.h"
@@ -44,12 +46,39 @@ int main(int argc, char** argv) {
       out.writeTotals(driver.steps(), driver.time(), driver.solid().totals(), driver.fluid().totals());
     };
     if (out.due(0.0)) write();
+    // The per-step coupling log: iterations, convergence and the residual of each measure.
+    std::unique_ptr<core::CsvWriter> log;
+    if (scene.output.enabled) {
+      std::vector<std::string> cols{"step", "time", "dt", "iterations", "converged"};
+      for (const auto& f : driver.schedule().measuredFields()) cols.push_back("residual_" + f);
+      log = std::make_unique<core::CsvWriter>(comm, scene.output.directory + "/" + scene.name + "_coupling.csv", cols);
+    }
     double tPrev = 0;
+    long unconverged = 0, iterations = 0;
     driver.run(scene.time.end, [&] {
+      const coupler::StepReport& r = driver.lastReport();
+      iterations += r.iterations;
+      if (!r.converged) {
+        ++unconverged;
+        if (comm.root())
+          std::cout << "coupling: step " << driver.steps() << " accepted unconverged after " << r.iterations
+                    << " iterations (coupling.accept_unconverged)\n";
+      }
+      if (log) {
+        std::vector<double> row{double(driver.steps()), driver.time(), driver.time() - tPrev, double(r.iterations),
+                                r.converged ? 1.0 : 0.0};
+        row.insert(row.end(), r.residuals.begin(), r.residuals.end());
+        log->row(row);
+      }
       if (out.due(driver.time())) write();
-      progress.step(static_cast<int>(driver.steps()), driver.time(), driver.time() - tPrev);
+      progress.step(static_cast<int>(driver.steps()), driver.time(), driver.time() - tPrev,
+                    {{"iters", double(r.iterations)}});
       tPrev = driver.time();
     });
+    if (comm.root())
+      std::cout << "coupling: schedule " << scene.coupling.schedule << ", " << iterations << " iterations in "
+                << driver.steps() << " steps (" << double(iterations) / double(std::max(1L, driver.steps()))
+                << " per step), " << unconverged << " steps accepted unconverged\n";
     progress.finish(static_cast<int>(driver.steps()), driver.time(), double(scene.mesh.numCells()));
     return 0;
   } catch (const core::SceneError& e) {

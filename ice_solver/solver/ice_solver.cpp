@@ -116,6 +116,31 @@ void IceSolver::setExternalMaterialState(int material, std::span<const double> m
   });
 }
 
+namespace {
+template <class State, class F>
+void forCheckpointFields(State& st, F&& f) {
+  for (auto& m : st.mat)
+    for (auto* x : {&m.mass, &m.vel, &m.eint, &m.spvol, &m.theta, &m.kappa}) f(*x);
+  f(st.press);
+  f(st.pressEq);
+}
+}  // namespace
+
+IceSolver::Checkpoint IceSolver::checkpoint() const {
+  Checkpoint c;
+  c.t = t_;
+  c.steps = nsteps_;
+  forCheckpointFields(st_, [&](const core::Field& x) { c.fields.push_back(x); });
+  return c;
+}
+
+void IceSolver::restore(const Checkpoint& c) {
+  std::size_t n = 0;
+  forCheckpointFields(st_, [&](core::Field& x) { x = c.fields.at(n++); });
+  t_ = c.t;
+  nsteps_ = c.steps;
+}
+
 void IceSolver::fitFluidsToExternalVolume() {
   const double V = mesh_.cellVolume();
   forEach(owned_, [&](int i, int j, int k) {

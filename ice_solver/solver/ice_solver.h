@@ -75,6 +75,17 @@ class IceSolver {
   [[nodiscard]] const core::Field& exchangeEnergy(int material) const { return st_.mat[material].dEnergy; }
   void advectFluids();
 
+  // ---- checkpoints (implicit coupling repeats a step from the state before it)
+  struct Checkpoint {
+    std::vector<core::Field> fields;
+    double t = 0;
+    long steps = 0;
+  };
+  /// Copies of every field a step starts from (each material's mass, velocity, internal energy,
+  /// specific volume, volume fraction, compressibility; the pressures) and the clock. Local.
+  [[nodiscard]] Checkpoint checkpoint() const;
+  void restore(const Checkpoint& c);
+
   // ---- access
   [[nodiscard]] const core::Field& pressure() const { return st_.press; }
   [[nodiscard]] const IceState& state() const { return st_; }

@@ -98,6 +98,20 @@ class MpmSolver {
   void gridToParticles();
   void endStep();
 
+  // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
+  struct Checkpoint {
+    ParticleSet particles;
+    double time = 0;
+    long step = 0;
+  };
+  /// The state a step starts from (particles and clock); restore() returns to it. Local.
+  [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_}; }
+  void restore(const Checkpoint& c) {
+    p_ = c.particles;
+    time_ = c.time;
+    step_ = c.step;
+  }
+
   // ---- diagnostics ---------------------------------------------------------------------------
   [[nodiscard]] Energies energies() const;
   /// Centre-of-mass velocity (global).

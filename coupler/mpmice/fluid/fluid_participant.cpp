@@ -1,5 +1,7 @@
 #include "mpmice/fluid/fluid_participant.h"
 
+#include <stdexcept>
+
 #include "exchange/cell_exchange.h"
 #include "mpmice/common/mpmd_protocol.h"
 #include "mpmice/common/run_output.h"
@@ -10,6 +12,10 @@ namespace mpmice::coupler {
 
 int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
   handshake(p, mpmiceHandshakeSections(scene));
+  if (scene.coupling.schedule != "monolithic")
+    throw std::invalid_argument("coupling.schedule '" + scene.coupling.schedule +
+                                "' runs in the monolithic driver (mpmice) so far; the MPMD launch of mpm_solver + "
+                                "ice_solver runs 'monolithic'");
   ice::IceSolver ice(scene, p.local());
   FluidSide side(ice, scene);
   const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
@@ -25,6 +31,9 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
     out.writeFields(n, t, ptrs, nullptr);
     tradeValues(p, side.totals().pack(), "totals");
   };
+  for (std::size_t s = 0; s < fields.size(); ++s)
+    ex.receive(fields[s].a(), kTagA + 8 * int(s), "initial solid state of " + fields[s].name);
+  side.start();
   double t = 0;
   long n = 0;
   if (out.due(t)) output(n, t);

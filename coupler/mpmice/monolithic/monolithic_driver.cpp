@@ -5,11 +5,6 @@
 
 namespace mpmice::coupler {
 
-namespace {
-void copyAll(const std::vector<const core::Field*>& from, const std::vector<core::Field*>& to) {
-  for (std::size_t i = 0; i < from.size(); ++i) to[i]->copyRegion(*from[i], from[i]->box(), to[i]->box());
-}
-}  // namespace
 
 MonolithicDriver::MonolithicDriver(const core::Scene& scene, const core::Comm& comm) : scene_(scene) {
   mpm_ = std::make_unique<mpm::MpmSolver>(scene, comm);
@@ -18,6 +13,17 @@ MonolithicDriver::MonolithicDriver(const core::Scene& scene, const core::Comm& c
     throw std::logic_error("mpmice: the MPM and ICE decompositions differ");
   solid_ = std::make_unique<SolidSide>(*mpm_);
   fluid_ = std::make_unique<FluidSide>(*ice_, scene);
+  schedule_ = makeSchedule(scene, comm);
+  // Start: the fluid takes the solids' initial cell state and fits its fluids to the volume they
+  // leave free (before any checkpoint, so implicit schedules repeat steps from that state).
+  // Partitioned schedules step the solid first with the fluid's last output: start it from the
+  // fluid's initial pressure (no force yet).
+  solid_->beginStep(solid_->stableTimeStep());
+  solid_->produceA();
+  transfer(solid_->fields(), fluid_->fields(), 'A');
+  fluid_->start();
+  fluid_->primeOutput();
+  transfer(fluid_->fields(), solid_->fields(), 'B');
 }
 
 MonolithicDriver::~MonolithicDriver() = default;
@@ -29,19 +35,7 @@ double MonolithicDriver::nextTimeStep(double until) const {
 }
 
 void MonolithicDriver::step(double dt) {
-  auto& sf = solid_->fields();
-  auto& ff = fluid_->fields();
-  solid_->beginStep(dt);
-  solid_->produceA();
-  for (std::size_t s = 0; s < sf.size(); ++s) copyAll(std::as_const(sf[s]).a(), ff[s].a());
-  fluid_->consumeAProduceB(dt);
-  for (std::size_t s = 0; s < sf.size(); ++s) copyAll(std::as_const(ff[s]).b(), sf[s].b());
-  solid_->consumeBProduceC();
-  for (std::size_t s = 0; s < sf.size(); ++s) copyAll({&sf[s].lagrangianMomentum}, {&ff[s].lagrangianMomentum});
-  fluid_->consumeCProduceD();
-  for (std::size_t s = 0; s < sf.size(); ++s) copyAll({&ff[s].exchangeMomentum}, {&sf[s].exchangeMomentum});
-  solid_->consumeDFinishStep();
-  fluid_->finishStep();
+  last_ = schedule_->step(*solid_, *fluid_, dt);
   t_ += dt;
   ++n_;
 }

@@ -2,13 +2,15 @@
 /// @brief The monolithic driver: libmpm and libice in one process, in-memory exchange.
 ///
 /// The reference that partitioned MPMD runs are measured against: the same SolidSide and
-/// FluidSide objects as the MPMD participants, with the four exchange points of the
-/// monolithic-style schedule turned into copies. Both solvers share the communicator and hence
-/// the decomposition.
+/// FluidSide objects as the MPMD participants, with the exchange points turned into copies.
+/// The step follows the scene's coupling.schedule (schedule/coupling_schedule.h): the seed's
+/// monolithic-style sequence or a partitioned explicit or implicit one. Both solvers share the
+/// communicator and hence the decomposition.
 #include <functional>
 #include <ostream>
 
 #include "mpmice/fluid/fluid_side.h"
+#include "mpmice/schedule/coupling_schedule.h"
 #include "mpmice/solid/solid_side.h"
 
 namespace mpmice::coupler {
@@ -31,6 +33,8 @@ class MonolithicDriver {
   [[nodiscard]] ice::IceSolver& ice() { return *ice_; }
   [[nodiscard]] SolidSide& solid() { return *solid_; }
   [[nodiscard]] FluidSide& fluid() { return *fluid_; }
+  [[nodiscard]] const CouplingSchedule& schedule() const { return *schedule_; }
+  [[nodiscard]] const StepReport& lastReport() const { return last_; }
 
  private:
   const core::Scene& scene_;
@@ -38,6 +42,8 @@ class MonolithicDriver {
   std::unique_ptr<ice::IceSolver> ice_;
   std::unique_ptr<SolidSide> solid_;
   std::unique_ptr<FluidSide> fluid_;
+  std::unique_ptr<CouplingSchedule> schedule_;
+  StepReport last_;
   double t_ = 0;
   long n_ = 0;
 };

@@ -1,6 +1,9 @@
 #include "mpmice/solid/solid_participant.h"
 
 #include <chrono>
+#include <utility>
+
+#include <stdexcept>
 
 #include "exchange/cell_exchange.h"
 #include "mpmice/common/mpmd_protocol.h"
@@ -16,6 +19,10 @@ double now() { return std::chrono::duration<double>(std::chrono::steady_clock::n
 
 int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
   handshake(p, mpmiceHandshakeSections(scene));
+  if (scene.coupling.schedule != "monolithic")
+    throw std::invalid_argument("coupling.schedule '" + scene.coupling.schedule +
+                                "' runs in the monolithic driver (mpmice) so far; the MPMD launch of mpm_solver + "
+                                "ice_solver runs 'monolithic'");
   mpm::MpmSolver mpm(scene, p.local());
   SolidSide side(mpm);
   const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
@@ -38,6 +45,11 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
     const SideTotals fluid = SideTotals::unpack(tradeValues(p, side.totals().pack(), "totals"));
     out.writeTotals(n, t, side.totals(), fluid);
   };
+  // Start: the fluid takes the solids' initial cell state (and fits its fluids around them).
+  side.beginStep(side.stableTimeStep());
+  side.produceA();
+  for (std::size_t s = 0; s < fields.size(); ++s)
+    ex.send(std::as_const(fields[s]).a(), kTagA + 8 * int(s), "initial solid state of " + fields[s].name);
   double t = 0;
   long n = 0;
   if (out.due(t)) output(n, t);

@@ -26,6 +26,9 @@ class SolidSide {
   void produceA();
   void consumeBProduceC();
   void consumeDFinishStep();
+  /// A whole step with the B and D fields as they are (partitioned schedules: the fluid's last
+  /// values); produces A and C.
+  void fullStep(double dt);
 
   [[nodiscard]] std::vector<SolidExchangeFields>& fields() { return fields_; }
   [[nodiscard]] mpm::MpmSolver& solver() { return mpm_; }
