@@ -1,6 +1,7 @@
 #include "mpmice/fluid/fluid_participant.h"
 
 #include <stdexcept>
+#include <utility>
 
 #include "exchange/cell_exchange.h"
 #include "mpmice/common/mpmd_protocol.h"
@@ -12,10 +13,8 @@ namespace mpmice::coupler {
 
 int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
   handshake(p, mpmiceHandshakeSections(scene));
-  if (scene.coupling.schedule != "monolithic")
-    throw std::invalid_argument("coupling.schedule '" + scene.coupling.schedule +
-                                "' runs in the monolithic driver (mpmice) so far; the MPMD launch of mpm_solver + "
-                                "ice_solver runs 'monolithic'");
+  const bool monolithic = scene.coupling.schedule == "monolithic";
+  const bool implicit = scene.coupling.schedule.rfind("implicit", 0) == 0;
   ice::IceSolver ice(scene, p.local());
   FluidSide side(ice, scene);
   const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
@@ -34,6 +33,21 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
   for (std::size_t s = 0; s < fields.size(); ++s)
     ex.receive(fields[s].a(), kTagA + 8 * int(s), "initial solid state of " + fields[s].name);
   side.start();
+  // The exchange points of the partitioned schedules: A and C in, B and D out.
+  auto receiveAC = [&](const std::string& what) {
+    for (std::size_t s = 0; s < fields.size(); ++s) {
+      ex.receive(fields[s].a(), kTagA + 8 * int(s), "solid state of " + fields[s].name + " (" + what + ")");
+      ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum (" + what + ")");
+    }
+  };
+  auto sendBD = [&](const std::string& what) {
+    for (std::size_t s = 0; s < fields.size(); ++s) {
+      ex.send(std::as_const(fields[s]).b(), kTagB + 8 * int(s), "receipt of the pressure force (" + what + ")");
+      ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments (" + what + ")");
+    }
+  };
+  side.primeOutput();
+  sendBD("the fluid's initial pressure");
   double t = 0;
   long n = 0;
   if (out.due(t)) output(n, t);
@@ -41,17 +55,32 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
     const bool more = !(scene.time.max_steps > 0 && n >= scene.time.max_steps);
     if (tradeValues(p, {more ? 1.0 : 0.0}, "go on")[0] == 0.0 || !more) break;
     const double dt = agreeOnTimeStep(p, side.stableTimeStep(), t, scene);
-    for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.receive(fields[s].a(), kTagA + 8 * int(s), "solid state of " + fields[s].name);
-    side.consumeAProduceB(dt);
-    for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.send(std::as_const(fields[s]).b(), kTagB + 8 * int(s), "receipt of the pressure force on " + fields[s].name);
-    for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
-    side.consumeCProduceD();
-    for (std::size_t s = 0; s < fields.size(); ++s)
-      ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments of " + fields[s].name);
-    side.finishStep();
+    if (monolithic) {
+      for (std::size_t s = 0; s < fields.size(); ++s)
+        ex.receive(fields[s].a(), kTagA + 8 * int(s), "solid state of " + fields[s].name);
+      side.consumeAProduceB(dt);
+      for (std::size_t s = 0; s < fields.size(); ++s)
+        ex.send(std::as_const(fields[s]).b(), kTagB + 8 * int(s), "receipt of the pressure force on " + fields[s].name);
+      for (std::size_t s = 0; s < fields.size(); ++s)
+        ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
+      side.consumeCProduceD();
+      for (std::size_t s = 0; s < fields.size(); ++s)
+        ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments of " + fields[s].name);
+      side.finishStep();
+    } else if (implicit) {  // the solid side iterates and decides; repeat until it says done
+      const auto cp = ice.checkpoint();
+      for (;;) {
+        receiveAC("iteration");
+        side.fullStep(dt);
+        sendBD("iteration");
+        if (tradeValues(p, {0.0}, "verdict of the iteration")[0] != 0.0) break;
+        ice.restore(cp);
+      }
+    } else {
+      receiveAC("step");
+      side.fullStep(dt);
+      sendBD("step");
+    }
     t += dt;
     ++n;
     maybeInjectFault(p, n);

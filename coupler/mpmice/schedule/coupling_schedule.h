@@ -13,18 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "mpmice/common/implicit_iteration.h"
 #include "mpmice/fluid/fluid_side.h"
 #include "mpmice/solid/solid_side.h"
 
 namespace mpmice::coupler {
-
-/// What a step did: iterations, whether it was accepted as converged, and the residual of each
-/// convergence measure at the last iteration.
-struct StepReport {
-  int iterations = 1;
-  bool converged = true;
-  std::vector<double> residuals;
-};
 
 class CouplingSchedule {
  public:

@@ -1,102 +1,14 @@
 #include "mpmice/schedule/implicit_schedule.h"
 
-#include <sstream>
-#include <stdexcept>
-
 namespace mpmice::coupler {
-
-namespace {
-bool isFluidOutput(const std::string& f) { return f == "pressure_force" || f == "pressure" || f == "exchange_momentum"; }
-}  // namespace
-
-ImplicitSchedule::ImplicitSchedule(const core::CouplingSpec& spec, const core::Comm& comm, bool parallel)
-    : spec_(spec), comm_(comm), parallel_(parallel) {
-  std::vector<core::ConvergenceSpec> conv = spec.convergence;
-  if (conv.empty()) {
-    for (const std::string f : {"pressure_force", "exchange_momentum"}) conv.push_back({f, "relative", 1e-6, true});
-    if (parallel) conv.push_back({"solid_velocity", "relative", 1e-6, true});
-  }
-  for (const auto& c : conv) {
-    if (!parallel_ && !isFluidOutput(c.field))
-      throw std::invalid_argument("coupling.convergence: field '" + c.field + "' is not iterated by implicit_serial; "
-                                  "valid: pressure_force, pressure, exchange_momentum (or use implicit_parallel)");
-    measures_.push_back({c.field, c.strict, makeConvergenceMeasure(c.type, c.limit)});
-  }
-  AccelerationParams a;
-  a.type = spec.acceleration.type;
-  a.relaxation = spec.acceleration.relaxation;
-  a.reuse = spec.acceleration.reuse;
-  a.filter = spec.acceleration.filter;
-  acceleration_ = makeAcceleration(a, comm);
-}
-
-std::vector<std::string> ImplicitSchedule::measuredFields() const {
-  std::vector<std::string> n;
-  for (const auto& m : measures_) n.push_back(m.field);
-  return n;
-}
-
-std::vector<std::pair<std::string, core::Field*>> ImplicitSchedule::iterated(std::vector<SolidExchangeFields>& f) const {
-  std::vector<std::pair<std::string, core::Field*>> out;
-  for (auto& s : f) {
-    if (parallel_) {
-      out.emplace_back("solid_mass", &s.mass);
-      out.emplace_back("solid_velocity", &s.velocity);
-      out.emplace_back("solid_temperature", &s.temperature);
-      out.emplace_back("solid_specific_volume", &s.specificVolume);
-      out.emplace_back("lagrangian_momentum", &s.lagrangianMomentum);
-    }
-    out.emplace_back("pressure_force", &s.pressureForce);
-    out.emplace_back("pressure", &s.pressure);
-    out.emplace_back("exchange_momentum", &s.exchangeMomentum);
-  }
-  return out;
-}
-
-Eigen::VectorXd ImplicitSchedule::pack(std::vector<SolidExchangeFields>& f, const std::string& only) const {
-  std::vector<double> v;
-  for (const auto& [name, field] : iterated(f)) {
-    if (!only.empty() && name != only) continue;
-    v.insert(v.end(), field->data(), field->data() + field->npts() * field->ncomp());
-  }
-  return Eigen::Map<Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
-}
-
-void ImplicitSchedule::unpack(const Eigen::VectorXd& x, std::vector<SolidExchangeFields>& f) const {
-  Eigen::Index o = 0;
-  for (const auto& [name, field] : iterated(f)) {
-    const auto n = static_cast<Eigen::Index>(field->npts() * field->ncomp());
-    std::copy(x.data() + o, x.data() + o + n, field->data());
-    o += n;
-  }
-}
 
 StepReport ImplicitSchedule::step(SolidSide& solid, FluidSide& fluid, double dt) {
   auto& sf = solid.fields();
   auto& ff = fluid.fields();
-  // The iterate lives in the solid's field set (iterated() order); the fluid reads A, C from
-  // its own set. The first step of implicit_parallel runs in serial order: the fluid needs a
-  // solid state to start from.
-  const bool serialNow = !parallel_ || first_;
   const auto cpSolid = solid.solver().checkpoint();
   const auto cpFluid = fluid.solver().checkpoint();
-  auto fieldOf = [&](const Eigen::VectorXd& x, const std::string& name) {
-    std::vector<double> v;
-    Eigen::Index o = 0;
-    for (const auto& [n, field] : iterated(sf)) {
-      const auto len = static_cast<Eigen::Index>(field->npts() * field->ncomp());
-      if (n == name) v.insert(v.end(), x.data() + o, x.data() + o + len);
-      o += len;
-    }
-    return Eigen::Map<Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())).eval();
-  };
-
-  for (auto& m : measures_) m.measure->newStep();
-  Eigen::VectorXd x = pack(sf);
-  StepReport report;
-  for (int k = 1;; ++k) {
-    unpack(x, sf);
-    if (serialNow) {
+  auto pass = [&](bool serialOrder) {
+    if (serialOrder) {
       solid.fullStep(dt);
       transfer(sf, ff, 'A');
       transfer(sf, ff, 'C');
@@ -109,41 +21,12 @@ StepReport ImplicitSchedule::step(SolidSide& solid, FluidSide& fluid, double dt)
     }
     transfer(ff, sf, 'B');
     transfer(ff, sf, 'D');
-    const Eigen::VectorXd xt = pack(sf);
-    bool allStrict = true, anySuffices = false, anyStrict = false;
-    report.residuals.clear();
-    for (auto& m : measures_) {
-      const bool ok = m.measure->measure(fieldOf(x, m.field), fieldOf(xt, m.field), comm_);
-      report.residuals.push_back(m.measure->residual());
-      if (m.strict) {
-        anyStrict = true;
-        allStrict = allStrict && ok;
-      } else {
-        anySuffices = anySuffices || ok;
-      }
-    }
-    const bool converged = k >= spec_.min_iterations && ((anyStrict && allStrict) || anySuffices);
-    report.iterations = k;
-    if (converged || k >= spec_.max_iterations) {
-      report.converged = converged;
-      if (!converged && !spec_.accept_unconverged) {
-        std::ostringstream os;
-        os << "coupling: the step at t = " << solid.solver().time() - dt << " did not converge in "
-           << spec_.max_iterations << " iterations (coupling.max_iterations); residuals:";
-        for (std::size_t i = 0; i < measures_.size(); ++i)
-          os << " " << measures_[i].field << " " << report.residuals[i] << " (limit "
-             << measures_[i].measure->threshold() << ")";
-        os << ". Raise max_iterations, relax the limits, add acceleration, or set accept_unconverged: true";
-        throw std::runtime_error(os.str());
-      }
-      acceleration_->iterationsConverged();
-      first_ = false;
-      return report;  // sf holds this step's output: the next step's input
-    }
+  };
+  auto restore = [&] {
     solid.solver().restore(cpSolid);
     fluid.solver().restore(cpFluid);
-    x = acceleration_->performAcceleration(x, xt);
-  }
+  };
+  return iteration_.iterate(sf, solid.solver().time(), pass, restore, [](bool) {});
 }
 
 }  // namespace mpmice::coupler

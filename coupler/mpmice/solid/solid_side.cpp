@@ -1,9 +1,4 @@
 #include "mpmice/solid/solid_side.h"
-// DBG-BEGIN
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-// DBG-END
 
 namespace mpmice::coupler {
 
@@ -60,35 +55,6 @@ void SolidSide::consumeDFinishStep() {
   }
   mpm_.gridToParticles();
   mpm_.endStep();
-  // DBG-BEGIN Eq. 13 error
-  if (std::getenv("MPMICE_EQ13") && !fields_.empty()) {
-    static long nstep = 0;
-    ++nstep;
-    const long every = std::atol(std::getenv("MPMICE_EQ13"));
-    if (every > 0 && nstep % every == 0) {
-      const core::Field& pc = fields_.front().pressure;
-      const core::Mesh& mesh = mpm_.scene().mesh;
-      double psum = 0;
-      int pn = 0;
-      core::forEach(pc.box(), [&](int i, int j, int k) {
-        const double x = mesh.cellCenter(0, i), y = mesh.cellCenter(1, j);
-        if (std::hypot(x, y) < 0.4) { psum += pc(i, j, k); ++pn; }
-      });
-      const double P = psum / pn, Pg = P - pRef_;
-      const auto& p = mpm_.particles();
-      double e = 0, eg = 0, mean = 0;
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        const double sr = p.stress[0][i] + p.stress[1][i];
-        e += std::abs(sr - 2 * P / 3) / (2 * P / 3);
-        eg += std::abs(sr - 2 * Pg / 3) / (2 * Pg / 3);
-        mean += sr;
-      }
-      const double n = static_cast<double>(p.size());
-      std::printf("EQ13 step %ld P %.6g mean(sr+st) %.6g 2P/3 %.6g err %.5f err_gauge %.5f\n", nstep, P, mean / n,
-                  2 * P / 3, e / n, eg / n);
-    }
-  }
-  // DBG-END
 }
 
 void SolidSide::fullStep(double dt) {
