@@ -18,13 +18,4 @@ grep -q "schedule: $schedule" "$work/alt/scene.yaml" || { echo "FAIL: could not 
 (cd "$work/alt" && "$bin/coupler/mpmice" scene.yaml) > "$work/alt.log" 2>&1 || { cat "$work/alt.log"; echo "FAIL: $schedule run"; exit 1; }
 grep -h "^coupling: schedule" "$work/ref.log" "$work/alt.log"
 a=$(ls "$work"/ref/output/*_conservation.csv) b=$(ls "$work"/alt/output/*_conservation.csv)
-paste -d, "$a" "$b" | awk -F, -v n="$(head -1 "$a" | awk -F, '{print NF}')" -v tol="$tol" '
-  NR == 1 { next }
-  { for (i = 3; i <= n; ++i) {
-      x = $i; y = $(i + n); d = x - y; if (d < 0) d = -d
-      s = (x < 0 ? -x : x); t = (y < 0 ? -y : y); if (t > s) s = t
-      r = d / (s > 1e-300 ? s : 1); if (d < 1e-12) r = 0
-      if (r > worst) worst = r } }
-  END { printf "largest relative difference from the monolithic-style run: %.3g (tolerance %g)\n", worst, tol
-        if (worst > tol) { print "FAIL"; exit 1 }
-        print "PASS" }'
+exec "$(dirname "$0")/compare_monitors.sh" "$a" "$b" "$tol" "schedule against the monolithic-style run"

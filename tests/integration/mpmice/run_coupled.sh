@@ -23,17 +23,4 @@ fi
   cat "$work/mpmd.log"; echo "FAIL: the MPMD launch failed"; exit 1; }
 grep -h "^done" "$work/mono.log" "$work/mpmd.log"
 a=$(ls "$work"/mono/output/*_conservation.csv) b=$(ls "$work"/mpmd/output/*_conservation.csv)
-[ -s "$a" ] && [ -s "$b" ] || { echo "FAIL: a conservation CSV is missing"; exit 1; }
-if [ "$(wc -l < "$a")" != "$(wc -l < "$b")" ] || [ "$(wc -l < "$a")" -lt 3 ]; then
-  echo "FAIL: the runs wrote different numbers of rows"; cat "$a" "$b"; exit 1
-fi
-paste -d, "$a" "$b" | awk -F, -v tol="$tol" -v n="$(head -1 "$a" | awk -F, '{print NF}')" '
-  NR == 1 { next }
-  { for (i = 1; i <= n; ++i) {
-      x = $i; y = $(i + n); d = x - y; if (d < 0) d = -d
-      s = (x < 0 ? -x : x); t = (y < 0 ? -y : y); if (t > s) s = t
-      r = d / (s > 1e-300 ? s : 1); if (d < 1e-12) r = 0
-      if (r > worst) worst = r } }
-  END { printf "largest relative difference of the monitors: %.3g\n", worst
-        if (worst > tol) { printf "FAIL: monolithic and MPMD runs differ (tolerance %g)\n", tol; exit 1 }
-        print "PASS" }'
+exec "$(dirname "$0")/compare_monitors.sh" "$a" "$b" "$tol" "MPMD against mpmice"
