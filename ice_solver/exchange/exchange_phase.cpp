@@ -1,9 +1,13 @@
 // IceSolver phase 10: pointwise implicit momentum and heat exchange over all materials per cell,
 //   m_r u_r + dt V sum_s theta_r theta_s K_rs (u_r - u_s) = m_r u_r^L     (same shape for m cv T, H)
-// solved with pointwiseExchange(). Momentum is conserved exactly; the work of the exchange forces
-// is taken at the cell's centre-of-mass velocity u_cm (invariant under the exchange), so material
-// r's energy changes by J_r . u_cm and the kinetic energy the drag removes becomes heat: total
-// energy is conserved. The increments of external materials are kept for the coupler.
+// solved with pointwiseExchange(). Momentum is conserved exactly. The kinetic energy the drag
+// removes, D = sum_r m_r (|u_r^L|^2 - |u_r|^2) / 2 >= 0, becomes heat shared in proportion to the
+// heat capacities m_r cv_r (every material warms by D / sum_r m_r cv_r), so total energy is
+// conserved. Not given to the material that lost the speed: a trace of fluid in a solid cell
+// (mass ~1e-10 of the cell's) would take all of it, +|du|^2/2 per unit mass each step, and its
+// specific volume, hence du = dt v grad p, grows with its temperature: a runaway (the seed
+// cylinder's wall, docs/coupling.md). Uintah's exchange converts none of D to internal energy.
+// The increments of external materials are kept for the coupler.
 #include "exchange/pointwise_exchange.h"
 #include "solver/ice_solver.h"
 
@@ -44,24 +48,27 @@ void IceSolver::exchange() {
       th[r] = ptr[r].th[c];
     }
     if (anyK_) {
-      double M = 0, P[3] = {0, 0, 0};
       for (int r = 0; r < nm; ++r) {
         s[r] = mass[r];
-        M += mass[r];
         for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * V * K_[r * nm + q] * th[r] * th[q];
         for (int d = 0; d < dim; ++d) {
           x[d * nm + r] = x0[d * nm + r] = ptr[r].uL[d][c];
-          P[d] += mass[r] * x0[d * nm + r];
         }
       }
       pointwiseExchange(nm, s, w, x, dim);
+      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
       for (int r = 0; r < nm; ++r) {
-        const Ptr& Q = ptr[r];
-        double de = 0;
         for (int d = 0; d < dim; ++d) {
           const double un = x[d * nm + r], uo = x0[d * nm + r];
-          const double ucm = M > 0 ? P[d] / M : 0.0;
-          de += (un - uo) * ucm - 0.5 * (un * un - uo * uo);
+          D += 0.5 * mass[r] * (uo - un) * (uo + un);
+        }
+        C += mass[r] * ptr[r].cv;
+      }
+      for (int r = 0; r < nm; ++r) {
+        const Ptr& Q = ptr[r];
+        const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
+        for (int d = 0; d < dim; ++d) {
+          const double un = x[d * nm + r], uo = x0[d * nm + r];
           Q.uL[d][c] = un;
           if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
         }

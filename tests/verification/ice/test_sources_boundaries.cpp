@@ -225,6 +225,59 @@ TEST(IceExternal, OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolum
   });
 }
 
+// The drag of the momentum exchange turns kinetic energy into heat; that heat is shared so that
+// every material of the cell warms by the same temperature, not given to the lightest one. Here
+// steel fills every cell and only a trace of air (volume fraction ~1e-9) moves through it at
+// 1000 m/s: the exchange stops the trace, and the 0.5 (1000 m/s)^2 = 5e5 J/kg it loses must not
+// all land on the trace (+700 K per step). That was the runaway of the seed cylinder: in the
+// wall's solid cells the trace air's specific volume ~ T / p grows, so its Lagrangian velocity
+// u - dt v grad p and the heat it received grew with it, until the trace took the cell's volume.
+TEST(IceExchange, DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace) {
+  core::Scene s;
+  s.name = "trace";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {4, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.materials = {test::idealGas("air"), externalSteel()};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2, {1000, 0, 0})};
+  s.ice.exchange_momentum = 1e15;
+  ice::IceSolver sol(s, test::comm());
+  const auto& owned = sol.ownedBox();
+  const std::size_t n = static_cast<std::size_t>(owned.numPts());
+  const double V = sol.mesh().cellVolume();
+  const double v0 = 1.0 / 8900.0;
+  std::vector<double> mass(n, V / v0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
+  sol.setExternalMaterialState(1, mass, vel, T, sv);
+  sol.fitFluidsToExternalVolume();  // the air becomes a trace in the filled cells
+  sol.computeEquilibriumPressure();
+  sol.beginStep(1e-6);
+  sol.computeFaceVelocities();
+  sol.computePressureIncrement();
+  sol.computeFacePressure();
+  sol.computeSourcesAndLagrangian();
+  const auto& air = sol.state().mat[0];
+  auto airT = [&](int i) { return air.eos->temperature(1.0 / air.spvolL(i, 0, 0), air.eintL(i, 0, 0)); };
+  std::vector<double> T0(n);
+  core::forEach(owned, [&](int i, int j, int k) { T0[static_cast<std::size_t>(owned.index(i, j, k))] = airT(i); });
+  std::vector<double> mom(3 * n, 0.0);
+  sol.setExternalLagrangianMomentum(1, mom);
+  sol.exchange();
+  core::forEach(owned, [&](int i, int j, int k) {
+    const double ma = air.mass(i, j, k), ms = sol.state().mat[1].mass(i, j, k);
+    const double dTair = airT(i) - T0[static_cast<std::size_t>(owned.index(i, j, k))];
+    EXPECT_LT(ma, 1e-8 * ms) << "cell " << i << ": air is a trace";
+    EXPECT_LT(std::abs(air.velL(i, j, k, 0)), 1e-3) << "cell " << i << ": the steel stops the trace";
+    const double dTsteel = sol.exchangeEnergy(1)(i, j, k) / (ms * 450.0);
+    EXPECT_GT(dTsteel, 0.0) << "cell " << i;
+    EXPECT_NEAR(dTair, dTsteel, 1e-6 * dTsteel + 1e-12) << "cell " << i << ": one temperature rise";
+    EXPECT_LT(dTair, 1e-3) << "cell " << i << ": the trace is not heated by the drag";
+    // The heat is the kinetic energy lost: 0.5 m_a (1000^2 - u_a^2) - 0.5 m_s u_s^2, u_s = m_a 1000 / m.
+    const double us = sol.exchangeMomentum(1)(i, j, k, 0) / ms;
+    const double lost = 0.5 * ma * (1e6 - air.velL(i, j, k, 0) * air.velL(i, j, k, 0)) - 0.5 * ms * us * us;
+    const double heat = sol.exchangeEnergy(1)(i, j, k) + ma * air.eos->cv() * dTair;
+    EXPECT_NEAR(heat, lost, 1e-6 * lost) << "cell " << i << ": energy conserved";
+  });
+}
+
 // Viscosity: a shear wave u_y = U sin(2 pi x) in a periodic box decays as exp(-nu k^2 t).
 TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
   core::Scene s;
