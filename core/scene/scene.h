@@ -134,8 +134,8 @@ struct LoadSpec {
   bool operator==(const LoadSpec&) const = default;
 };
 
-/// An energy source for a fluid: power per unit volume [W/m^3] into `material` inside `shape`
-/// between `start` and `end`.
+/// An energy source for a fluid: power per unit volume of that fluid [W/m^3] into `material` in
+/// the cells inside `shape` between `start` and `end` (a shared cell gets power x theta x V).
 struct SourceSpec {
   std::string material;
   ShapeSpec shape;

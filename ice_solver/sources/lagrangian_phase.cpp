@@ -5,7 +5,7 @@
 // Without external materials the fluids' total energy is made conservative: the mismatch between
 // the flux form -dt sum_faces A p_f U_f and the kinetic plus internal changes above (a truncation
 // error) is given to the materials in proportion to theta_r kappa_r, so closed boxes keep their
-// total energy to round-off. Energy sources add power * V * dt to their material.
+// total energy to round-off. Energy sources add power * theta * V * dt to their material.
 #include <algorithm>
 #include <cmath>
 
@@ -126,9 +126,12 @@ void IceSolver::computeSourcesAndLagrangian() {
     if (!(b > a)) continue;
     MaterialState& m = st_.mat[s.material];
     const double* mass = m.mass.data();
+    const double* theta = m.theta.data();
     double* e = m.eintL.data();
+    // power_density is per unit volume of the material: a cell the material shares (with a
+    // solid's surface, say) receives power * theta * V, so it heats at the rate of a full one.
     for (const std::int64_t c : s.cells)
-      if (mass[c] > 0) e[c] += s.power * V * (b - a) / mass[c];
+      if (mass[c] > 0) e[c] += s.power * theta[c] * V * (b - a) / mass[c];
   }
 }
 
