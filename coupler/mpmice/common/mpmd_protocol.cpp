@@ -52,6 +52,11 @@ void maybeInjectFault(const Participant& p, long step) {
   std::_Exit(9);
 }
 
+bool agreeToGoOn(const Participant& p, const core::Scene& scene, long stepsTaken) {
+  const bool more = !(scene.time.max_steps > 0 && stepsTaken >= scene.time.max_steps);
+  return tradeValues(p, {more ? 1.0 : 0.0}, "go on")[0] != 0.0 && more;
+}
+
 double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene) {
   const double theirs = tradeValues(p, {mine}, "time step")[0];
   double dt = std::min({mine, theirs, scene.time.dt_max});

@@ -25,6 +25,9 @@ std::vector<double> tradeValues(const Participant& p, const std::vector<double>&
 /// that step, as a crashed program would.
 void maybeInjectFault(const Participant& p, long step);
 
+/// Both sides agree whether to take another step (both stop at time.max_steps).
+bool agreeToGoOn(const Participant& p, const core::Scene& scene, long stepsTaken);
+
 /// Smaller of this side's and the peer's stable step, capped by dt_max and the time left.
 double agreeOnTimeStep(const Participant& p, double mine, double t, const core::Scene& scene);
 

@@ -52,8 +52,7 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
   long n = 0;
   if (out.due(t)) output(n, t);
   while (t < scene.time.end * (1 - 1e-12)) {
-    const bool more = !(scene.time.max_steps > 0 && n >= scene.time.max_steps);
-    if (tradeValues(p, {more ? 1.0 : 0.0}, "go on")[0] == 0.0 || !more) break;
+    if (!agreeToGoOn(p, scene, n)) break;
     const double dt = agreeOnTimeStep(p, side.stableTimeStep(), t, scene);
     if (monolithic) {
       for (std::size_t s = 0; s < fields.size(); ++s)

@@ -75,8 +75,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
   long n = 0;
   if (out.due(t)) output(n, t);
   while (t < scene.time.end * (1 - 1e-12)) {
-    const bool more = !(scene.time.max_steps > 0 && n >= scene.time.max_steps);
-    if (tradeValues(p, {more ? 1.0 : 0.0}, "go on")[0] == 0.0 || !more) break;
+    if (!agreeToGoOn(p, scene, n)) break;
     double compute = 0, exchange = 0, t0 = now();
     auto lap = [&](double& bucket) {
       const double t1 = now();
