@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
     // 2. Solvers.
     coupler::MonolithicDriver driver(scene, comm);
     const long long particles = driver.mpm().globalParticleCount();
-    core::Progress progress(std::cout, comm, 0.0, scene.time.end);
+    core::Progress progress(std::cout, comm, 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
     progress.start(scene.name + " (mpmice, monolithic, " + std::to_string(particles) + " particles)",
                    scene.mesh.describe(), comm.size());
     // 3-4. Steps and output.

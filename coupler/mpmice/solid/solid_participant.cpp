@@ -26,7 +26,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
   const CellExchange ex(p, mpm.decomposition(), peer);
   auto& fields = side.fields();
 
-  core::Progress progress(log, p.local(), 0.0, scene.time.end);
+  core::Progress progress(log, p.local(), 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
   progress.start(scene.name + " (mpm_solver, coupled to '" + p.peerName() + "', " +
                      std::to_string(mpm.globalParticleCount()) + " particles)",
                  scene.mesh.describe(), p.local().size());
