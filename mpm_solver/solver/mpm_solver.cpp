@@ -643,6 +643,31 @@ void MpmSolver::addCellPressureStress(const Field& pcell, double pRef) {
   }
 }
 
+void MpmSolver::addCellEnergy(int material, const Field& energy) {
+  const core::Mesh& mesh = scene_.mesh;
+  const core::Box owned = decomp_.cellBox(comm_.rank());
+  const double cv = scene_.materials.at(material).specific_heat;
+  const auto [b, e] = p_.materialRange(material);
+  std::vector<double>& cellMass = scratch_;
+  cellMass.assign(static_cast<std::size_t>(owned.numPts()), 0.0);
+  auto cellOf = [&](std::size_t i) {
+    int c[3] = {0, 0, 0};
+    for (int d = 0; d < mesh.dim(); ++d)
+      c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
+                        owned.hi[d]);
+    return std::array<int, 3>{c[0], c[1], c[2]};
+  };
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOf(i);
+    cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))] += p_.mass[i];
+  }
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOf(i);
+    const double m = cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))];
+    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
+  }
+}
+
 Energies MpmSolver::energies() const {
   Energies e;
   for (std::size_t i = 0; i < p_.size(); ++i) {

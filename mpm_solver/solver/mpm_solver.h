@@ -95,6 +95,9 @@ class MpmSolver {
   /// Adds -sum_p V_p (p_cell - pRef) grad w_ip to the external node force. Call after
   /// computeInternalForces() and before updateGrid(). Collective.
   void addCellPressureStress(const core::Field& cellPressure, double pRef);
+  /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to
+  /// its particles in each cell: one temperature rise dE / (m_cell cv) for all of them. Local.
+  void addCellEnergy(int material, const core::Field& energy);
   void gridToParticles();
   void endStep();
 

@@ -11,6 +11,7 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       pressureForce(n + "/pressure_force", core::Centering::Cell, owned, 3, 0),
       pressure(n + "/pressure", core::Centering::Cell, owned, 1, 0),
       lagrangianMomentum(n + "/lagrangian_momentum", core::Centering::Cell, owned, 3, 0),
-      exchangeMomentum(n + "/exchange_momentum", core::Centering::Cell, owned, 3, 0) {}
+      exchangeMomentum(n + "/exchange_momentum", core::Centering::Cell, owned, 3, 0),
+      exchangeEnergy(n + "/exchange_energy", core::Centering::Cell, owned, 1, 0) {}
 
 }  // namespace mpmice::coupler

@@ -49,6 +49,7 @@ std::vector<std::pair<std::string, core::Field*>> ImplicitIteration::iterated(st
     out.emplace_back("pressure_force", &s.pressureForce);
     out.emplace_back("pressure", &s.pressure);
     out.emplace_back("exchange_momentum", &s.exchangeMomentum);
+    out.emplace_back("exchange_energy", &s.exchangeEnergy);
   }
   return out;
 }

@@ -24,7 +24,7 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
           {"end time", std::to_string(s.time.end)},
           {"exchanged fields",
            "A: mass velocity temperature specific_volume | B: pressure_force pressure | C: lagrangian_momentum | "
-           "D: exchange_momentum"}};
+           "D: exchange_momentum exchange_energy"}};
 }
 
 std::vector<double> tradeValues(const Participant& p, const std::vector<double>& mine, const std::string& what) {

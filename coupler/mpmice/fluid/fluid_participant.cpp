@@ -43,7 +43,7 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
   auto sendBD = [&](const std::string& what) {
     for (std::size_t s = 0; s < fields.size(); ++s) {
       ex.send(std::as_const(fields[s]).b(), kTagB + 8 * int(s), "receipt of the pressure force (" + what + ")");
-      ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments (" + what + ")");
+      ex.send(std::as_const(fields[s]).d(), kTagD + 8 * int(s), "receipt of exchange increments (" + what + ")");
     }
   };
   side.primeOutput();
@@ -64,7 +64,7 @@ int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ost
         ex.receive({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
       side.consumeCProduceD();
       for (std::size_t s = 0; s < fields.size(); ++s)
-        ex.send({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "receipt of exchange increments of " + fields[s].name);
+        ex.send(std::as_const(fields[s]).d(), kTagD + 8 * int(s), "receipt of exchange increments of " + fields[s].name);
       side.finishStep();
     } else if (implicit) {  // the solid side iterates and decides; repeat until it says done
       const auto cp = ice.checkpoint();

@@ -30,6 +30,7 @@ void FluidSide::consumeCProduceD() {
   for (auto& f : fields_) {
     const core::Field& d = ice_.exchangeMomentum(f.material);
     f.exchangeMomentum.copyRegion(d, f.exchangeMomentum.box(), f.exchangeMomentum.box());
+    f.exchangeEnergy.copyRegion(ice_.exchangeEnergy(f.material), f.exchangeEnergy.box(), f.exchangeEnergy.box());
   }
 }
 
@@ -48,6 +49,7 @@ void FluidSide::primeOutput() {
     f.pressure.copyRegion(ice_.pressure(), f.pressure.box(), f.pressure.box());
     f.pressureForce.fill(0.0);
     f.exchangeMomentum.fill(0.0);
+    f.exchangeEnergy.fill(0.0);
   }
 }
 

@@ -13,7 +13,7 @@ std::vector<const core::Field*> point(const SolidExchangeFields& f, char p) {
     case 'A': return f.a();
     case 'B': return f.b();
     case 'C': return {&f.lagrangianMomentum};
-    default: return {&f.exchangeMomentum};
+    default: return f.d();
   }
 }
 std::vector<core::Field*> point(SolidExchangeFields& f, char p) {
@@ -21,7 +21,7 @@ std::vector<core::Field*> point(SolidExchangeFields& f, char p) {
     case 'A': return f.a();
     case 'B': return f.b();
     case 'C': return {&f.lagrangianMomentum};
-    default: return {&f.exchangeMomentum};
+    default: return f.d();
   }
 }
 }  // namespace

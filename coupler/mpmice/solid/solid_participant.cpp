@@ -48,7 +48,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
   auto receiveBD = [&](const std::string& what) {
     for (std::size_t s = 0; s < fields.size(); ++s) {
       ex.receive(fields[s].b(), kTagB + 8 * int(s), "pressure force on " + fields[s].name + " (" + what + ")");
-      ex.receive({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "exchange increments (" + what + ")");
+      ex.receive(fields[s].d(), kTagD + 8 * int(s), "exchange increments (" + what + ")");
     }
   };
   const bool monolithic = scene.coupling.schedule == "monolithic";
@@ -99,7 +99,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
       for (std::size_t s = 0; s < fields.size(); ++s)
         ex.send({&fields[s].lagrangianMomentum}, kTagC + 8 * int(s), "Lagrangian momentum of " + fields[s].name);
       for (std::size_t s = 0; s < fields.size(); ++s)
-        ex.receive({&fields[s].exchangeMomentum}, kTagD + 8 * int(s), "exchange increments of " + fields[s].name);
+        ex.receive(fields[s].d(), kTagD + 8 * int(s), "exchange increments of " + fields[s].name);
       lap(exchange);
       side.consumeDFinishStep();
       lap(compute);

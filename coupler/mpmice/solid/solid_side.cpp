@@ -52,6 +52,7 @@ void SolidSide::consumeDFinishStep() {
       for (int d = 0; d < 3; ++d) dv_(i, j, k, d) = m > 0 ? f.exchangeMomentum(i, j, k, d) / m : 0.0;
     });
     mpm_.applyCellVelocityIncrement(f.material, dv_);
+    mpm_.addCellEnergy(f.material, f.exchangeEnergy);
   }
   mpm_.gridToParticles();
   mpm_.endStep();

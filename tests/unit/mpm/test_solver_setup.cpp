@@ -174,3 +174,30 @@ TEST(Phases, CellStateConservesMass) {
   solver.endStep();
   EXPECT_NEAR(solver.centerOfMassVelocity()[0], 0.1, 1e-9);  // interior block: exact
 }
+
+// Energy handed to a material per cell (ICE's exchange heat) warms that cell's particles by one
+// temperature rise dE / (m_cell cv); the heat the particles gain equals the energy handed over.
+TEST(Phases, CellEnergyWarmsTheCellsParticles) {
+  auto s = blockScene();
+  MpmSolver solver(s, self());
+  const double cv = s.materials[0].specific_heat;
+  const core::Box owned = solver.decomposition().cellBox(0);
+  core::Field dE("dE", core::Centering::Cell, owned, 1, 0, 0.0);
+  dE(2, 2, 0) = 300.0;  // a covered cell (x 0.5..0.75, y 0.5..0.75): 6 particles of 1000 * 0.0625 / 6 kg
+  dE(0, 0, 0) = 99.0;   // no particles there: nothing happens
+  const auto& p = solver.particles();
+  std::vector<double> T0 = p.temperature;
+  solver.addCellEnergy(0, dE);
+  double heat = 0;
+  int warmed = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double dT = p.temperature[i] - T0[i];
+    heat += p.mass[i] * cv * dT;
+    if (dT != 0) {
+      ++warmed;
+      EXPECT_NEAR(dT, 300.0 / (1000 * 0.0625 * cv), 1e-12);
+    }
+  }
+  EXPECT_EQ(warmed, 6);
+  EXPECT_NEAR(heat, 300.0, 1e-9);
+}
