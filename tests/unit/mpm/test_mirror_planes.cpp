@@ -11,16 +11,13 @@
 
 #include "mpm_problems.h"
 #include "parallel/comm.h"
+#include "serial_mpi.h"
 
 using namespace mpmice;
 using namespace mpmice::mpm;
 namespace pr = mpmice::mpm::problems;
 
 namespace {
-struct MpiGuard {
-  MpiGuard() { int i = 0; MPI_Initialized(&i); if (!i) MPI_Init(nullptr, nullptr); }
-  ~MpiGuard() { int f = 0; MPI_Finalized(&f); if (!f) MPI_Finalize(); }
-} g_mpi;
 
 core::Comm self() { return core::Comm(MPI_COMM_SELF); }
 

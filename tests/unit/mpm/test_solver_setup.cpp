@@ -5,6 +5,7 @@
 
 #include "mpm_problems.h"
 #include "parallel/comm.h"
+#include "serial_mpi.h"
 
 using namespace mpmice;
 using namespace mpmice::mpm;
@@ -13,19 +14,6 @@ namespace pr = mpmice::mpm::problems;
 namespace {
 core::Comm self() { return core::Comm(MPI_COMM_SELF); }
 
-struct MpiGuard {  // plain gtest main: initialise MPI once for MPI_COMM_SELF
-  MpiGuard() {
-    int init = 0;
-    MPI_Initialized(&init);
-    if (!init) MPI_Init(nullptr, nullptr);
-  }
-  ~MpiGuard() {
-    int fin = 0;
-    MPI_Finalized(&fin);
-    if (!fin) MPI_Finalize();
-  }
-};
-MpiGuard g_mpi;
 
 core::Scene blockScene() {
   core::Scene s;

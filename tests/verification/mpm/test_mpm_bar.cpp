@@ -5,15 +5,12 @@
 #include <cstdio>
 
 #include "mpm_problems.h"
+#include "serial_mpi.h"
 
 using namespace mpmice;
 namespace pr = mpmice::mpm::problems;
 
 namespace {
-struct MpiGuard {
-  MpiGuard() { int i = 0; MPI_Initialized(&i); if (!i) MPI_Init(nullptr, nullptr); }
-  ~MpiGuard() { int f = 0; MPI_Finalized(&f); if (!f) MPI_Finalize(); }
-} g_mpi;
 
 std::vector<pr::BarResult> study(const std::string& shape, const std::string& update, std::vector<double>& hs,
                                  std::vector<int> grid = {13, 25, 50}) {

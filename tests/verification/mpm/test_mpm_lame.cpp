@@ -7,15 +7,12 @@
 #include <cstdio>
 
 #include "mpm_problems.h"
+#include "serial_mpi.h"
 
 using namespace mpmice;
 namespace pr = mpmice::mpm::problems;
 
 namespace {
-struct MpiGuard {
-  MpiGuard() { int i = 0; MPI_Initialized(&i); if (!i) MPI_Init(nullptr, nullptr); }
-  ~MpiGuard() { int f = 0; MPI_Finalized(&f); if (!f) MPI_Finalize(); }
-} g_mpi;
 
 std::vector<double> errors(const char* shape, const std::vector<double>& dx, int ppc = 2) {
   std::vector<double> e;
