@@ -201,6 +201,22 @@ struct AccelerationSpec {
   bool operator==(const AccelerationSpec&) const = default;
 };
 
+/// The interface of a surface-coupled fluid (coupling.fluid: openfoam): which solid's surface
+/// particles meet which boundary patch of the fluid mesh, how data are mapped between them and
+/// which OpenFOAM case and solver run the fluid. See docs/openfoam.md.
+struct InterfaceSpec {
+  std::string solid;                        // material whose surface particles are coupled
+  std::string patch;                        // the fluid's coupled boundary patch
+  std::string openfoam_case;                // case directory (relative to the scene file)
+  std::string openfoam_solver = "pimpleFoam";
+  std::string mapping = "rbf";              // nearest_neighbor | rbf
+  double rbf_support = 0;                   // rbf: 0 = thin-plate spline, > 0 = Wendland C2 radius [m]
+  std::string mode = "two_way";             // two_way | one_way (fluid to steady state, forces once)
+  double fluid_density = 1.0;               // rho for kinematic-pressure solvers (pimpleFoam) [kg/m^3]
+  SourceLoc where;
+  bool operator==(const InterfaceSpec&) const = default;
+};
+
 struct CouplingSpec {
   std::string schedule = "monolithic";  // monolithic | explicit_serial | explicit_parallel |
                                         // implicit_serial | implicit_parallel
@@ -211,7 +227,17 @@ struct CouplingSpec {
   double timeout = 60.0;                // seconds any wait may take
   int mpm_ranks = 1, ice_ranks = 1;     // for `coupler run`
   std::string fluid = "ice";            // ice | openfoam
+  InterfaceSpec interface;              // fluid: openfoam (required there)
   bool operator==(const CouplingSpec&) const = default;
+};
+
+/// A point followed through the run: the solid particle nearest to `point` at t = 0, its
+/// position and displacement written every step to <directory>/<scene>_probes.csv.
+struct ProbeSpec {
+  std::string name;
+  RealVect point{0, 0, 0};
+  SourceLoc where;
+  bool operator==(const ProbeSpec&) const = default;
 };
 
 struct OutputSpec {
@@ -220,6 +246,7 @@ struct OutputSpec {
   std::vector<std::string> fields;      // empty = every field the solver offers
   bool particles = true;
   bool enabled = true;
+  std::vector<ProbeSpec> probes;        // solid points followed every step
   bool operator==(const OutputSpec&) const = default;
 };
 

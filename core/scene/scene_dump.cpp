@@ -269,6 +269,13 @@ void options(std::ostream& o, const Scene& s) {
       o << "    - {field: " << quote(cv.field) << ", type: " << cv.type << ", limit: " << num(cv.limit)
         << ", strict: " << flag(cv.strict) << "}\n";
   }
+  if (c.fluid == "openfoam") {
+    const InterfaceSpec& f = c.interface;
+    o << "  interface:\n    solid: " << quote(f.solid) << "\n    patch: " << quote(f.patch) << "\n    case: "
+      << quote(f.openfoam_case) << "\n    solver: " << f.openfoam_solver << "\n    mapping: " << f.mapping
+      << "\n    rbf_support: " << num(f.rbf_support) << "\n    mode: " << f.mode << "\n    fluid_density: "
+      << num(f.fluid_density) << "\n";
+  }
   const AccelerationSpec& a = c.acceleration;
   o << "  acceleration: {type: " << a.type;
   if (a.type != "none") o << ", relaxation: " << num(a.relaxation);
@@ -278,6 +285,11 @@ void options(std::ostream& o, const Scene& s) {
   o << "output:\n  directory: " << quote(out.directory) << "\n  interval: " << num(out.interval) << "\n  fields: [";
   for (std::size_t k = 0; k < out.fields.size(); ++k) o << (k ? ", " : "") << quote(out.fields[k]);
   o << "]\n  particles: " << flag(out.particles) << "\n  enabled: " << flag(out.enabled) << "\n";
+  if (!out.probes.empty()) {
+    o << "  probes:\n";
+    for (const auto& p : out.probes)
+      o << "    - {name: " << quote(p.name) << ", point: " << vec(p.point, s.mesh.dim()) << "}\n";
+  }
 }
 
 }  // namespace

@@ -528,12 +528,25 @@ class SchemaReader {
   void readCoupling(const YamlValue& v) {
     const YamlMap m = v.map();
     m.allow({"schedule", "fluid", "min_iterations", "max_iterations", "accept_unconverged", "timeout", "ranks",
-             "convergence", "acceleration"});
+             "convergence", "acceleration", "interface"});
     CouplingSpec& c = s_.coupling;
     c.schedule = m.choice("schedule", c.schedule,
                           {"monolithic", "explicit_serial", "explicit_parallel", "implicit_serial", "implicit_parallel"},
                           "coupling schedule");
     c.fluid = m.choice("fluid", c.fluid, {"ice", "openfoam"}, "fluid solver");
+    if (c.fluid == "openfoam") {
+      c.interface = readInterface(m.required("interface"));
+      if (c.schedule == "monolithic" || c.schedule.find("parallel") != std::string::npos)
+      {
+        const std::string why = "schedule '" + c.schedule + "' does not apply to coupling.fluid 'openfoam', which "
+                                "couples through the interface one side after the other; valid schedules: "
+                                "explicit_serial, implicit_serial";
+        if (const auto sv = m.get("schedule")) sv->fail(why);
+        m.fail(why);
+      }
+    } else if (const auto i = m.get("interface")) {
+      i->fail("coupling.interface applies to coupling.fluid 'openfoam' only (ICE shares the volume, not a surface)");
+    }
     c.min_iterations = static_cast<int>(m.integer("min_iterations", c.min_iterations, 1, kIntMax));
     c.max_iterations = static_cast<int>(m.integer("max_iterations", c.max_iterations, c.min_iterations, kIntMax));
     c.accept_unconverged = m.boolean("accept_unconverged", c.accept_unconverged);
@@ -550,7 +563,8 @@ class SchemaReader {
         cm.allow({"field", "type", "limit", "strict"});
         ConvergenceSpec cs;
         cs.field = cm.required("field").choice(
-            {"exchange_momentum", "lagrangian_momentum", "pressure", "pressure_force", "solid_velocity"},
+            {"exchange_momentum", "lagrangian_momentum", "pressure", "pressure_force", "solid_velocity",
+             "interface_force", "interface_displacement"},
             "exchanged field");
         cs.type = cm.choice("type", cs.type, {"absolute", "relative", "residual_relative"}, "convergence measure");
         cs.limit = cm.number("limit", cs.limit, Range::positive());
@@ -570,9 +584,28 @@ class SchemaReader {
     }
   }
 
+  InterfaceSpec readInterface(const YamlValue& v) const {
+    const YamlMap m = v.map();
+    m.allow({"solid", "patch", "case", "solver", "mapping", "rbf_support", "mode", "fluid_density"});
+    InterfaceSpec i;
+    i.where = v.loc();
+    const MaterialKind solid = MaterialKind::Solid;
+    i.solid = materialRef(m.required("solid"), &solid, "the coupled surface is a solid's");
+    i.patch = m.required("patch").string();
+    if (i.patch.empty()) m.required("patch").fail("expected the name of the fluid mesh's coupled boundary patch");
+    i.openfoam_case = m.required("case").string();
+    i.openfoam_solver = m.choice("solver", i.openfoam_solver, {"pimpleFoam", "pisoFoam", "icoFoam"},
+                                 "OpenFOAM solver (incompressible, kinematic pressure)");
+    i.mapping = m.choice("mapping", i.mapping, {"nearest_neighbor", "rbf"}, "interface mapping");
+    i.rbf_support = m.number("rbf_support", i.rbf_support, Range::nonNegative());  // [m], 0 = thin-plate spline
+    i.mode = m.choice("mode", i.mode, {"two_way", "one_way"}, "interface coupling mode");
+    i.fluid_density = m.number("fluid_density", i.fluid_density, Range::positive());  // [kg/m^3]
+    return i;
+  }
+
   void readOutput(const YamlValue& v) {
     const YamlMap m = v.map();
-    m.allow({"directory", "interval", "fields", "particles", "enabled"});
+    m.allow({"directory", "interval", "fields", "particles", "enabled", "probes"});
     OutputSpec& o = s_.output;
     o.directory = m.string("directory", o.directory);
     o.interval = m.number("interval", o.interval, Range::nonNegative());  // [s], 0 = last step only
@@ -580,6 +613,18 @@ class SchemaReader {
       for (const auto& item : f->list()) o.fields.push_back(item.string());
     o.particles = m.boolean("particles", o.particles);
     o.enabled = m.boolean("enabled", o.enabled);
+    if (const auto pv = m.get("probes"))
+      for (const auto& item : pv->list()) {
+        const YamlMap pm = item.map();
+        pm.allow({"name", "point"});
+        ProbeSpec p;
+        p.where = item.loc();
+        p.name = pm.required("name").string();
+        for (const auto& q : o.probes)
+          if (q.name == p.name) pm.required("name").fail("probe name '" + p.name + "' is given twice");
+        p.point = pm.required("point").vector(dim_);
+        o.probes.push_back(p);
+      }
   }
 
   YamlValue root_;

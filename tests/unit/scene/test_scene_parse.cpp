@@ -98,7 +98,8 @@ coupling:
   ranks: {mpm: 2, ice: 3}
   convergence: [{field: solid_velocity, type: relative, limit: 1e-5, strict: true}, {field: pressure, type: absolute, limit: 1}]
   acceleration: {type: iqn_ils, relaxation: 0.1, reuse: 4, filter: 1e-6}
-output: {directory: "out dir/everything", interval: 1e-4, fields: [pressure, velocity], particles: false, enabled: false}
+  interface: {solid: steel, patch: flap, case: "fluid case", solver: pisoFoam, mapping: nearest_neighbor, rbf_support: 0.5, mode: one_way, fluid_density: 1000}
+output: {directory: "out dir/everything", interval: 1e-4, fields: [pressure, velocity], particles: false, enabled: false, probes: [{name: tip, point: [0.5, 1]}, {name: base, point: [0.5, 0]}]}
 )";
 
 const std::string k3D = R"(
@@ -136,6 +137,8 @@ Scene withoutLocations(Scene s) {
     src.where = {};
     clearLocations(src.shape);
   }
+  s.coupling.interface.where = {};
+  for (auto& p : s.output.probes) p.where = {};
   return s;
 }
 
