@@ -6,6 +6,9 @@
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "dimensionedScalar.H"
+#include "pointFields.H"
+#include "fixedValuePointPatchFields.H"
+#include "mpmice_bridge.h"
 
 namespace Foam
 {
@@ -32,29 +35,81 @@ Foam::functionObjects::mpmiceAdapter::mpmiceAdapter
     haveNu_(false),
     nu_(0),
     notedNoViscous_(false),
-    csv_()
+    csv_(),
+    sceneFile_(),
+    bridge_(nullptr),
+    coupled_(false),
+    twoWay_(false),
+    implicit_(false),
+    windows_(0),
+    savedTime_(0),
+    savedIndex_(0)
 {
     read(dict);
     openCsv();
+    if (!sceneFile_.empty())
+    {
+        startCoupling();
+    }
+}
+
+Foam::functionObjects::mpmiceAdapter::~mpmiceAdapter()
+{
+    if (bridge_)
+    {
+        mpmice_bridge_finish(bridge_);
+        bridge_ = nullptr;
+    }
+}
+
+void Foam::functionObjects::mpmiceAdapter::fail(const string& what) const
+{
+    FatalErrorInFunction
+        << "mpmiceAdapter: " << what.c_str() << nl << exit(FatalError);
 }
 
 bool Foam::functionObjects::mpmiceAdapter::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
 
-    patchName_ = dict.get<word>("patch");
+    sceneFile_ = dict.lookupOrDefault<fileName>("scene", fileName());
+    if (!sceneFile_.empty())
+    {
+        // The scene names the patch and the density; the bridge reads it.
+        bridge_ = mpmice_bridge_start(sceneFile_.c_str());
+        const char* err = mpmice_bridge_error(bridge_);
+        if (err)
+        {
+            fail(string("cannot join the coupled run: ") + err);
+        }
+        mpmice_bridge_info info;
+        mpmice_bridge_info_get(bridge_, &info);
+        coupled_ = info.coupled != 0;
+        twoWay_ = info.two_way != 0;
+        implicit_ = info.implicit != 0;
+        patchName_ = word(info.patch);
+        rho_ = info.fluid_density;
+    }
+    else
+    {
+        patchName_ = dict.get<word>("patch");
+    }
     patchi_ = mesh_.boundaryMesh().findPatchID(patchName_);
     if (patchi_ < 0)
     {
         FatalIOErrorInFunction(dict)
-            << "mpmiceAdapter: unknown patch '" << patchName_ << "'" << nl
+            << "mpmiceAdapter: unknown patch '" << patchName_ << "'"
+            << (sceneFile_.empty() ? "" : " (coupling.interface.patch of the scene)") << nl
             << "    valid patch names: " << mesh_.boundaryMesh().names()
             << exit(FatalIOError);
     }
 
     pName_ = dict.lookupOrDefault<word>("p", "p");
     UName_ = dict.lookupOrDefault<word>("U", "U");
-    rho_ = dict.lookupOrDefault<scalar>("rho", 1.0);
+    if (sceneFile_.empty())
+    {
+        rho_ = dict.lookupOrDefault<scalar>("rho", 1.0);
+    }
 
     haveNu_ = false;
     if (dict.found("nu"))
@@ -119,8 +174,163 @@ Foam::vector Foam::functionObjects::mpmiceAdapter::patchForce()
     return rho_*force;
 }
 
+Foam::tmp<Foam::vectorField>
+Foam::functionObjects::mpmiceAdapter::faceForces()
+{
+    const vectorField& Sf = mesh_.Sf().boundaryField()[patchi_];
+    tmp<vectorField> tf(new vectorField(Sf.size(), Zero));
+    vectorField& f = tf.ref();
+    if (foundObject<volScalarField>(pName_))
+    {
+        f += lookupObject<volScalarField>(pName_).boundaryField()[patchi_]*Sf;
+    }
+    if (haveNu_ && foundObject<volVectorField>(UName_))
+    {
+        const volVectorField& U = lookupObject<volVectorField>(UName_);
+        const volTensorField gradU(fvc::grad(U));
+        f += Sf & (-nu_*dev(twoSymm(gradU.boundaryField()[patchi_])));
+    }
+    f *= rho_;
+    return tf;
+}
+
+void Foam::functionObjects::mpmiceAdapter::startCoupling()
+{
+    if (Pstream::parRun())
+    {
+        fail("coupled runs need a serial OpenFOAM solver (Pstream of v1912 takes MPI_COMM_WORLD; see adapters/openfoam/README.md)");
+    }
+    const polyPatch& pp = mesh_.boundaryMesh()[patchi_];
+    const vectorField Cf(pp.faceCentres());
+    const pointField& pts = pp.localPoints();
+    List<scalar> fc(3*Cf.size()), pc(3*pts.size());
+    forAll(Cf, i) { for (direction d = 0; d < 3; ++d) fc[3*i + d] = Cf[i][d]; }
+    forAll(pts, i) { for (direction d = 0; d < 3; ++d) pc[3*i + d] = pts[i][d]; }
+    scalar depth = 1;
+    if (mesh_.nSolutionD() == 2)
+    {
+        const Vector<label>& sol = mesh_.solutionD();
+        const vector span = mesh_.bounds().span();
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (sol[d] < 0) depth = span[d];
+        }
+    }
+    if (twoWay_ && !mesh_.foundObject<pointVectorField>("pointDisplacement"))
+    {
+        fail("two-way coupling moves the mesh: give constant/dynamicMeshDict a displacementLaplacian motion solver "
+             "(dynamicMotionSolverFvMesh) and 0/pointDisplacement with a fixedValue on patch " + patchName_);
+    }
+    if (mpmice_bridge_set_patch(bridge_, Cf.size(), fc.cdata(), pts.size(), pc.cdata(), depth,
+                                time_.deltaTValue(), time_.startTime().value(), time_.endTime().value()))
+    {
+        fail(mpmice_bridge_error(bridge_));
+    }
+    Info<< type() << " " << name() << ": coupled through patch " << patchName_ << " ("
+        << Cf.size() << " faces, " << pts.size() << " points, depth " << depth << " m), "
+        << (twoWay_ ? "two-way" : "one-way") << (implicit_ ? ", implicit" : ", explicit") << endl;
+    if (implicit_) checkpoint();
+}
+
+void Foam::functionObjects::mpmiceAdapter::applyDisplacements(const List<scalar>& d)
+{
+    pointVectorField& pd =
+        const_cast<pointVectorField&>(mesh_.lookupObject<pointVectorField>("pointDisplacement"));
+    pointPatchVectorField& bp = pd.boundaryFieldRef()[patchi_];
+    if (!isA<fixedValuePointPatchVectorField>(bp))
+    {
+        fail("pointDisplacement on patch " + patchName_ + " must be fixedValue (the solid sets it)");
+    }
+    vectorField disp(bp.size());
+    forAll(disp, i) { disp[i] = vector(d[3*i], d[3*i + 1], d[3*i + 2]); }
+    refCast<fixedValuePointPatchVectorField>(bp) == disp;
+}
+
+template<class FieldType>
+void Foam::functionObjects::mpmiceAdapter::store(Saved<FieldType>& s)
+{
+    const wordList names(mesh_.sortedNames<FieldType>());
+    label n = 0;
+    forAll(names, i) { if (!names[i].endsWith("_0")) ++n; }
+    s.fields.clear(); s.old.clear();
+    s.fields.setSize(n); s.old.setSize(n); s.names.setSize(n); s.indices.setSize(n);
+    label k = 0;
+    forAll(names, i)
+    {
+        if (names[i].endsWith("_0")) continue;
+        const FieldType& f = mesh_.lookupObject<FieldType>(names[i]);
+        s.names[k] = names[i];
+        s.indices[k] = f.timeIndex();
+        s.fields.set(k, new FieldType(names[i] + "_mpmiceSaved", f));
+        if (f.nOldTimes())
+        {
+            s.old.set(k, new FieldType(names[i] + "_mpmiceSaved0", f.oldTime()));
+        }
+        ++k;
+    }
+}
+
+template<class FieldType>
+void Foam::functionObjects::mpmiceAdapter::reload(Saved<FieldType>& s)
+{
+    forAll(s.names, k)
+    {
+        if (!mesh_.foundObject<FieldType>(s.names[k])) continue;
+        FieldType& f = const_cast<FieldType&>(mesh_.lookupObject<FieldType>(s.names[k]));
+        // The time index first: with it, oldTime() does not store the current values again.
+        f.timeIndex() = s.indices[k];
+        if (s.old.set(k) && f.nOldTimes())
+        {
+            f.oldTime() == s.old[k];
+        }
+        f == s.fields[k];
+    }
+}
+
+void Foam::functionObjects::mpmiceAdapter::checkpoint()
+{
+    savedTime_ = time_.value();
+    savedIndex_ = time_.timeIndex();
+    store(vsf_); store(vvf_); store(ssf_); store(svf_);
+}
+
+// The mesh needs no checkpoint: displacementLaplacian places the points at points0 + the
+// displacement (absolute), and when the window is repeated at the same time index, polyMesh
+// keeps its old points and fvMesh its old volumes from the first attempt (both store them
+// once per time index), so the mesh flux sweeps from the window's start again.
+void Foam::functionObjects::mpmiceAdapter::restore()
+{
+    const_cast<Time&>(time_).setTime(savedTime_, savedIndex_);
+    reload(vsf_); reload(vvf_); reload(ssf_); reload(svf_);
+}
+
 bool Foam::functionObjects::mpmiceAdapter::execute()
 {
+    if (bridge_ && coupled_)
+    {
+        const vectorField f(faceForces());
+        List<scalar> ff(3*f.size());
+        forAll(f, i) { for (direction d = 0; d < 3; ++d) ff[3*i + d] = f[i][d]; }
+        const label nPoints = mesh_.boundaryMesh()[patchi_].nPoints();
+        List<scalar> disp(3*nPoints, 0.0);
+        const bool last = time_.value() > time_.endTime().value() - 0.5*time_.deltaTValue();
+        int action = 0, iterations = 1;
+        if (mpmice_bridge_exchange(bridge_, time_.value(), time_.deltaTValue(), last ? 1 : 0, ff.cdata(),
+                                   disp.data(), &action, &iterations))
+        {
+            fail(mpmice_bridge_error(bridge_));
+        }
+        if (twoWay_) applyDisplacements(disp);
+        if (action == 1 && !last)
+        {
+            Info<< type() << ": window ending at t = " << time_.value() << " repeated (iteration "
+                << iterations << ")" << endl;
+            restore();
+            return true;
+        }
+        ++windows_;
+        if (implicit_) checkpoint();
+    }
     const vector F = patchForce();
     if (csv_.valid())
     {

@@ -1,12 +1,14 @@
 #include "cli/run_command.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
 
+#include "cli/openfoam_case.h"
 #include "scene/did_you_mean.h"
 
 #ifndef MPMICE_MPIRUN_PATH
@@ -38,18 +40,27 @@ std::string LaunchPlan::describeWorldRank(int worldRank) const {
 }
 
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                         const std::string& mpirun, int mpmRanks, int iceRanks) {
-  if (scene.coupling.fluid != "ice")
-    throw std::invalid_argument("coupler run: coupling.fluid '" + scene.coupling.fluid +
-                                "' is not launched by coupler run yet; valid here: ice");
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
   LaunchPlan plan;
+  if (scene.coupling.fluid == "openfoam") {
+    // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
+    const std::string solver = scene.coupling.interface.openfoam_solver;
+    const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
+    plan.programs = {"mpm_solver", solver};
+    plan.ranks = {mpmRanks, 1};
+    plan.executables = {mpm};
+    plan.argv = {mpirun, "-x", "WM_PROJECT_DIR", "-np", std::to_string(mpmRanks), mpm, sceneFile,
+                 ":", "-np", "1", solver, "-case", fluidCase};
+    return plan;
+  }
   plan.programs = {"mpm_solver", "ice_solver"};
   plan.ranks = {mpmRanks, iceRanks};
   plan.argv = {mpirun};
   for (std::size_t p = 0; p < plan.programs.size(); ++p) {
     if (p) plan.argv.emplace_back(":");
     const fs::path exe = fs::path(binDir) / plan.programs[p] / plan.programs[p];
+    plan.executables.push_back(exe.string());
     plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe.string(), sceneFile});
   }
   return plan;
@@ -116,17 +127,21 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
-    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks);
-    for (std::size_t p = 0; p < plan.programs.size(); ++p) {
-      const fs::path exe = plan.argv[p == 0 ? 3 : 8];
+    std::string fluidCase;
+    if (scene.coupling.fluid == "openfoam" && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
+    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
+    for (const auto& exe : plan.executables)
       if (!fs::exists(exe))
-        throw std::invalid_argument("coupler run: " + exe.string() + " does not exist; build it, or point --bin-dir at the build directory");
-    }
+        throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");
     out << "coupler: scene '" << scene.name << "', schedule " << scene.coupling.schedule << ", " << mpmRanks
-        << " MPM + " << iceRanks << " ICE ranks\n"
+        << " MPM + " << (scene.coupling.fluid == "openfoam" ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
+                                                              : std::to_string(iceRanks) + " ICE ranks")
+        << "\n"
         << "coupler: " << plan.commandLine() << "\n"
         << std::flush;
     if (dryRun) return 0;
+    // Debian's OpenFOAM finds its etc/ through WM_PROJECT_DIR (exported to the launch by -x).
+    if (scene.coupling.fluid == "openfoam") setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
 
     FILE* pipe = popen((plan.commandLine() + " 2>&1").c_str(), "r");
     if (!pipe) throw std::runtime_error("coupler run: could not start " + plan.argv[0]);

@@ -5,12 +5,14 @@
 //               scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml
 //               scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)
 // 1. Read and validate the scene (errors name file, line and key; exit 1); join the launch
-//    (coupler/launch/participant.h): with a peer, run the coupled solid side and stop there.
+//    (coupler/launch/participant.h): with a peer, run the coupled solid side and stop there
+//    (MPM-ICE: coupler/mpmice/solid; a surface coupling with OpenFOAM: coupler/surface/solid).
 // 2. Build the solver: decomposition over the ranks, particles from the geometry.
 // 3. Step to time.end with progress lines (core/util/progress.h). At t = 0, at every
 //    output.interval and at the last step (unless output.enabled is false): one HDF5 file of
 //    particles and grid nodes plus the XDMF index (solver/mpm_output.h), and a row of energies in
-//    <directory>/<scene>_energies.csv.
+//    <directory>/<scene>_energies.csv. Probes (output.probes), when given: the position and
+//    displacement of their particles at t = 0 and after every step in <directory>/<scene>_probes.csv.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -21,10 +23,12 @@
 #include "launch/participant.h"
 #include "launch/timed_wait.h"
 #include "mpmice/solid/solid_participant.h"
+#include "surface/solid/surface_solid_participant.h"
 #include "parallel/mpi_session.h"
 #include "scene/scene.h"
 #include "solver/mpm_output.h"
 #include "solver/mpm_solver.h"
+#include "solver/probes.h"
 #include "util/progress.h"
 
 using namespace mpmice;
@@ -39,7 +43,18 @@ int main(int argc, char** argv) {
     // 1. Scene and launch.
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
-    if (participant.coupled()) return coupler::runSolidParticipant(participant, scene, std::cout);
+    if (participant.coupled()) {
+      if (scene.coupling.fluid == "openfoam") {
+        try {
+          return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
+        } catch (const std::invalid_argument& ex) {  // only this side knows (e.g. the fluid's case disagrees)
+          std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+          std::fflush(stderr);
+          core::MpiSession::abortAll(1);
+        }
+      }
+      return coupler::runSolidParticipant(participant, scene, std::cout);
+    }
     const core::Comm comm = participant.local();
     // 2. Solver.
     mpm::MpmSolver solver(scene, comm);
@@ -76,6 +91,8 @@ int main(int argc, char** argv) {
       solver.projectToGrid();  // node fields of the initial state
       writeOutput();
     }
+    const auto probes = mpm::ProbeRecorder::fromScene(solver);  // collective; null without probes
+    if (probes) probes->record(solver);
     const double interval = scene.output.interval > 0 ? scene.output.interval : scene.time.end;
     double nextOut = interval;
     const double tEnd = scene.time.end * (1 - 1e-12);
@@ -83,6 +100,7 @@ int main(int argc, char** argv) {
     while (solver.time() < tEnd) {
       if (scene.time.max_steps > 0 && solver.stepCount() >= scene.time.max_steps) break;
       const double dt = solver.advance(std::min(scene.time.end, nextOut));
+      if (probes) probes->record(solver);
       written = false;
       if (solver.time() >= nextOut * (1 - 1e-12)) {
         writeOutput();

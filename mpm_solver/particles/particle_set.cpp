@@ -7,9 +7,9 @@ namespace mpmice::mpm {
 
 std::vector<ParticleSet::Col*> ParticleSet::columns() {
   std::vector<Col*> c;
-  for (auto* a : {&x, &v, &halfSize, &fext})
+  for (auto* a : {&x, &v, &halfSize, &fext, &x0, &fsurf})
     for (auto& col : *a) c.push_back(&col);
-  for (auto* s : {&mass, &vol0, &vol, &temperature, &eqps, &failed, &work, &loadArea}) c.push_back(s);
+  for (auto* s : {&mass, &vol0, &vol, &temperature, &eqps, &failed, &work, &loadArea, &surface}) c.push_back(s);
   for (auto& col : F) c.push_back(&col);
   for (auto& col : L) c.push_back(&col);
   for (auto& col : stress) c.push_back(&col);
@@ -43,6 +43,7 @@ std::size_t ParticleSet::addParticle(const std::array<double, 3>& pos,
   resize(i + 1);
   for (int d = 0; d < 3; ++d) {
     x[d][i] = pos[d];
+    x0[d][i] = pos[d];
     v[d][i] = vel[d];
     halfSize[d][i] = half[d];
   }

@@ -24,6 +24,9 @@ class ParticleSet {
   std::array<Col, 3> x, v;        // position, velocity
   std::array<Col, 3> halfSize;    // initial half-width per direction (GIMP), physical units
   std::array<Col, 3> fext;        // external force of loads this step
+  std::array<Col, 3> x0;          // position at t = 0 (displacements, probes)
+  std::array<Col, 3> fsurf;       // force of a surface coupling (set by the coupler, held until changed)
+  Col surface;                    // 1 on the surface particles of a coupled solid, else 0
   Col mass, vol0, vol, temperature;
   Col eqps;                       // equivalent plastic strain
   Col failed;                     // 1 once the failure strain was reached

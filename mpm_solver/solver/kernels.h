@@ -83,7 +83,7 @@ void momentumToGrid(const ParticleSet& p, std::size_t begin, std::size_t end, co
   }
 }
 
-/// Internal force -V sigma grad(w) plus body force m g w and particle loads fext w.
+/// Internal force -V sigma grad(w) plus body force m g w and particle loads (fext + fsurf) w.
 template <class Shape, int Dim>
 void internalForces(const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
                     const double gravity[3], bool loads, double* const force[3]) {
@@ -94,7 +94,7 @@ void internalForces(const ParticleSet& p, std::size_t begin, std::size_t end, co
     const double sxx = V * p.stress[kXX][i], syy = V * p.stress[kYY][i], szz = V * p.stress[kZZ][i];
     const double sxy = V * p.stress[kXY][i], syz = V * p.stress[kYZ][i], sxz = V * p.stress[kXZ][i];
     double b[3];
-    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] : 0.0);
+    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
     s.forNodes(g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
       force[0][n] += b[0] * w - (sxx * gx + sxy * gy + sxz * gz);
       if constexpr (Dim >= 2) force[1][n] += b[1] * w - (sxy * gx + syy * gy + syz * gz);

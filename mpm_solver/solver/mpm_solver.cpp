@@ -305,7 +305,7 @@ void MpmSolver::computeInternalForces() {
   double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
   const GridGeom geom = g.geom();
   const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
-  const bool loads = !scene_.loads.empty();
+  const bool loads = !scene_.loads.empty() || surfaceForces_;
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     kernels::internalForces<S, D>(p_, 0, p_.size(), geom, grav, loads, f);
   });

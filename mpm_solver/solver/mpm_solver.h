@@ -101,6 +101,11 @@ class MpmSolver {
   void gridToParticles();
   void endStep();
 
+  // ---- surface coupling (an interface-BC fluid such as OpenFOAM) ------------------------------
+  /// From now on the particle column fsurf (force per particle, held from step to step until the
+  /// coupler changes it) enters the internal force pass like a load.
+  void enableSurfaceForces() { surfaceForces_ = true; }
+
   // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
   struct Checkpoint {
     ParticleSet particles;
@@ -141,6 +146,7 @@ class MpmSolver {
   double dt_ = 0, time_ = 0;
   long step_ = 0;
   double massFloor_ = 0;
+  bool surfaceForces_ = false;
   double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
   int sortInterval_ = 20;
   // Cell state per material (built on demand) and its node masses.
