@@ -42,6 +42,7 @@ Foam::functionObjects::mpmiceAdapter::mpmiceAdapter
     twoWay_(false),
     implicit_(false),
     windows_(0),
+    endTime_(0),
     savedTime_(0),
     savedIndex_(0)
 {
@@ -221,10 +222,18 @@ void Foam::functionObjects::mpmiceAdapter::startCoupling()
         fail("two-way coupling moves the mesh: give constant/dynamicMeshDict a displacementLaplacian motion solver "
              "(dynamicMotionSolverFvMesh) and 0/pointDisplacement with a fixedValue on patch " + patchName_);
     }
+    endTime_ = time_.endTime().value();
     if (mpmice_bridge_set_patch(bridge_, Cf.size(), fc.cdata(), pts.size(), pc.cdata(), depth,
-                                time_.deltaTValue(), time_.startTime().value(), time_.endTime().value()))
+                                time_.deltaTValue(), time_.startTime().value(), endTime_))
     {
         fail(mpmice_bridge_error(bridge_));
+    }
+    if (implicit_)
+    {
+        // Time::run() executes function objects after the last step outside its loop, where a
+        // repeated window could not be solved again. One window more keeps the last one inside;
+        // execute() ends the run once the real last window is accepted.
+        const_cast<Time&>(time_).setEndTime(endTime_ + time_.deltaTValue());
     }
     Info<< type() << " " << name() << ": coupled through patch " << patchName_ << " ("
         << Cf.size() << " faces, " << pts.size() << " points, depth " << depth << " m), "
@@ -313,7 +322,7 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
         forAll(f, i) { for (direction d = 0; d < 3; ++d) ff[3*i + d] = f[i][d]; }
         const label nPoints = mesh_.boundaryMesh()[patchi_].nPoints();
         List<scalar> disp(3*nPoints, 0.0);
-        const bool last = time_.value() > time_.endTime().value() - 0.5*time_.deltaTValue();
+        const bool last = time_.value() > endTime_ - 0.5*time_.deltaTValue();
         int action = 0, iterations = 1;
         if (mpmice_bridge_exchange(bridge_, time_.value(), time_.deltaTValue(), last ? 1 : 0, ff.cdata(),
                                    disp.data(), &action, &iterations))
@@ -321,7 +330,7 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
             fail(mpmice_bridge_error(bridge_));
         }
         if (twoWay_) applyDisplacements(disp);
-        if (action == 1 && !last)
+        if (action == 1)
         {
             Info<< type() << ": window ending at t = " << time_.value() << " repeated (iteration "
                 << iterations << ")" << endl;
@@ -329,7 +338,14 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
             return true;
         }
         ++windows_;
-        if (implicit_) checkpoint();
+        if (implicit_ && last)
+        {
+            const_cast<Time&>(time_).setEndTime(time_.value());
+        }
+        else if (implicit_)
+        {
+            checkpoint();
+        }
     }
     const vector F = patchForce();
     if (csv_.valid())

@@ -64,8 +64,9 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
   fs::copy(src, dst, fs::copy_options::recursive);
   const fs::path cd = dst / "system" / "controlDict";
   std::string text = withFunctionObject(slurp(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
-  if (iface.mode == "two_way") {
-    // One end time: the scene's (two-way runs both sides to it).
+  {
+    // One end time: the scene's (two-way: both sides run to it; one-way: the fluid runs to it,
+    // then the solid relaxes under the last forces for as long again).
     std::ostringstream e;
     e.precision(17);
     e << "$1endTime         " << scene.time.end << ";";

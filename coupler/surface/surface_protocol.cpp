@@ -74,10 +74,10 @@ void checkFluidTime(const SurfaceSetup& s, const core::Scene& scene) {
   if (std::abs(s.start) > 1e-12)
     throw std::invalid_argument("the fluid case starts at t = " + std::to_string(s.start) +
                                 " (controlDict startTime); coupled runs start at 0");
-  if (scene.coupling.interface.mode == "two_way" && std::abs(s.end - scene.time.end) > 0.5 * s.dt) {
+  if (std::abs(s.end - scene.time.end) > 0.5 * s.dt) {
     std::ostringstream os;
     os << "time.end is " << scene.time.end << " s in the scene but the fluid case's controlDict endTime is " << s.end
-       << " s; make them equal (two-way coupling runs both to the same time)";
+       << " s; make them equal (`coupler run` sets it from the scene)";
     throw std::invalid_argument(os.str());
   }
 }

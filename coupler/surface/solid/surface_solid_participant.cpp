@@ -13,6 +13,7 @@
 #include "mapping/mapping.h"
 #include "solver/mpm_output.h"
 #include "solver/mpm_solver.h"
+#include "solver/probes.h"
 #include "surface/solid/surface_particles.h"
 #include "surface/surface_protocol.h"
 #include "util/progress.h"
@@ -94,7 +95,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   auto dispMap = makeMapping(iface.mapping, iface.rbf_support);
   dispMap->compute(particles, cloudOf(setup.pointCoords), dim);
 
-  core::Progress progress(log, comm, 0.0, oneWay ? scene.time.end + setup.end : scene.time.end,
+  core::Progress progress(log, comm, 0.0, oneWay ? 2 * scene.time.end : scene.time.end,
                           core::ProgressOptions{2.0, 0});
   progress.start(scene.name + " (mpm_solver, surface-coupled to '" + p.peerName() + "', " + iface.mode + ", " +
                      scene.coupling.schedule + ")",
@@ -121,6 +122,8 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     mpm.projectToGrid();
     output->write(mpm);
   }
+  const auto probes = mpm::ProbeRecorder::fromScene(mpm);  // collective; null without probes
+  if (probes) probes->record(mpm);
 
   // Implicit: the iterate is the displacement of the patch points; measures and acceleration
   // work on data every solid rank holds in full (a communicator of one).
@@ -250,9 +253,8 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
         converged = k >= scene.coupling.min_iterations && ((anyStrict && allStrict) || anySuffices);
         iterations = k;
         lap(compute);
-        // OpenFOAM v1912 cannot repeat its final window (Time::run has left its loop): accepted.
-        if (converged || k >= scene.coupling.max_iterations || head.last) {
-          if (!converged && !head.last && !scene.coupling.accept_unconverged) {
+        if (converged || k >= scene.coupling.max_iterations) {
+          if (!converged && !scene.coupling.accept_unconverged) {
             std::ostringstream os;
             os << "coupling: the window ending at t = " << head.tEnd << " did not converge in "
                << scene.coupling.max_iterations << " iterations (coupling.max_iterations); residual " << residual
@@ -279,6 +281,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     if (csv)
       csv->row({double(window), t, head.dt, double(iterations), converged ? 1.0 : 0.0, double(substeps), F[0], F[1],
                 F[2], residual, compute, exchange});
+    if (probes && !oneWay) probes->record(mpm);
     if (output && !oneWay && mpm.time() >= nextOut * (1 - 1e-12)) {
       output->write(mpm);
       while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
@@ -302,6 +305,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     while (mpm.time() < scene.time.end * (1 - 1e-12)) {
       const double dt = mpm.advance(scene.time.end);
       ++n;
+      if (probes) probes->record(mpm);
       if (output && mpm.time() >= nextOut * (1 - 1e-12)) {
         output->write(mpm);
         while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
@@ -311,8 +315,10 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     substepsTotal += n;
   }
   if (output) output->write(mpm);
-  progress.finish(static_cast<int>(window), t, double(mpm.globalParticleCount()) * double(substepsTotal) /
-                                                   std::max(1.0, double(window)),
+  // Work per window: the MPM particle-steps it took (sub-cycling included).
+  const long windowsAll = oneWay ? window + (substepsTotal > 0 ? 1 : 0) : window;
+  progress.finish(static_cast<int>(windowsAll), oneWay ? t + mpm.time() : t,
+                  double(mpm.globalParticleCount()) * double(substepsTotal) / std::max(1.0, double(windowsAll)),
                   "particle-steps");
   return 0;
 }

@@ -15,9 +15,9 @@
 ///                    the fluid used and those the solid returns agree (coupling.convergence on
 ///                    interface_displacement / interface_force; coupling.acceleration on the
 ///                    displacements).
-/// one_way: the fluid runs alone (the solid only answers), to its end time; its last forces are
-/// then held while the solid relaxes to time.end (quasi-static with mpm.damping): the classic
-/// sequential CFD -> structure workflow.
+/// one_way: the fluid runs alone with the undeformed solid (the solid only answers) to time.end,
+/// to a steady state; its last forces are then held while the solid relaxes for time.end
+/// (quasi-static with mpm.damping): the classic sequential CFD -> structure workflow.
 /// Writes particles (HDF5/XDMF), probes, and <scene>_coupling.csv (per window: time, iterations,
 /// MPM sub-steps, total interface force, timings).
 #include <ostream>

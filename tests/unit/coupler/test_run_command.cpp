@@ -1,6 +1,9 @@
 // `coupler run`: the composed MPMD line and the translation of failed world ranks to participants.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include "cli/openfoam_case.h"
 #include "cli/run_command.h"
 #include "scene/scene.h"
 
@@ -47,4 +50,59 @@ TEST(CoupleRun, ExplainsFailedRanksFromMpirunText) {
 TEST(CoupleRun, RejectsBadRankCounts) {
   const auto s = tinyScene();
   EXPECT_THROW(coupler::composeLaunch(s, "tiny.yaml", "/b", "mpirun", 0, 1), std::invalid_argument);
+}
+
+namespace {
+core::Scene flapScene(const std::string& caseDir) {
+  return core::parseScene(R"(
+scene: flap
+mesh: {dim: 2, lower: [-0.5, 0], upper: [0.5, 1.2], cells: [20, 24]}
+time: {end: 0.5}
+materials:
+  - {name: flap, kind: solid, density: 3000, model: {type: neo_hookean, youngs_modulus: 4.0e6, poissons_ratio: 0.3}}
+geometry:
+  - {shape: {type: box, lo: [-0.05, 0], hi: [0.05, 1]}, material: flap}
+coupling:
+  schedule: explicit_serial
+  fluid: openfoam
+  ranks: {mpm: 2}
+  interface: {solid: flap, patch: flap, case: ")" + caseDir + R"(", solver: pisoFoam}
+)", "flap.yaml");
+}
+}  // namespace
+
+TEST(CoupleRun, ComposesTheOpenFoamLaunchWithASerialFluid) {
+  const auto s = flapScene("fluid");
+  const auto plan = coupler::composeLaunch(s, "flap.yaml", "/b", "/x/mpirun", 2, 4, "/o/fluid");
+  EXPECT_EQ(plan.commandLine(), "/x/mpirun -x WM_PROJECT_DIR -np 2 /b/mpm_solver/mpm_solver flap.yaml : -np 1 "
+                                "pisoFoam -case /o/fluid");
+  EXPECT_EQ(plan.describeWorldRank(2), "pisoFoam rank 0");
+  ASSERT_EQ(plan.executables.size(), 1u);
+}
+
+TEST(CoupleRun, AddsTheAdapterInsideTheFunctionsDictionary) {
+  const std::string entry = coupler::adapterEntry("/b/lib.so", "/s/flap.yaml");
+  EXPECT_NE(entry.find("type    mpmiceAdapter;"), std::string::npos);
+  EXPECT_NE(entry.find("scene   \"/s/flap.yaml\";"), std::string::npos);
+  // An existing functions dictionary keeps its objects; the adapter goes first inside it.
+  const std::string withFunctions = "endTime 5;\nfunctions\n{\n    forces { type forces; }\n}\n";
+  const std::string a = coupler::withFunctionObject(withFunctions, entry);
+  EXPECT_EQ(a, "endTime 5;\nfunctions\n{\n" + entry + "\n    forces { type forces; }\n}\n");
+  // Without one, a functions dictionary is appended; `functionsOther` is not a match.
+  const std::string b = coupler::withFunctionObject("functionsOther 1;\n", entry);
+  EXPECT_EQ(b, "functionsOther 1;\n\nfunctions\n{\n" + entry + "}\n");
+}
+
+TEST(CoupleRun, AMissingOpenFoamCaseNamesTheSceneKey) {
+  const auto s = flapScene("no/such/case");
+  std::ostringstream out;
+  try {
+    (void)coupler::prepareOpenFoamCase(s, "flap.yaml", "/b", out);
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("flap.yaml:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("coupling.interface.case: 'no/such/case'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("no system/controlDict"), std::string::npos) << msg;
+  }
 }
