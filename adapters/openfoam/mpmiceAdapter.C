@@ -7,6 +7,7 @@
 #include "IOdictionary.H"
 #include "dimensionedScalar.H"
 #include "pointFields.H"
+#include "DynamicList.H"
 #include "fixedValuePointPatchFields.H"
 #include "mpmice_bridge.h"
 
@@ -258,15 +259,20 @@ void Foam::functionObjects::mpmiceAdapter::applyDisplacements(const List<scalar>
 template<class FieldType>
 void Foam::functionObjects::mpmiceAdapter::store(Saved<FieldType>& s)
 {
-    const wordList names(mesh_.sortedNames<FieldType>());
-    label n = 0;
-    forAll(names, i) { if (!names[i].endsWith("_0")) ++n; }
+    // The previous checkpoint's copies go first (they are registered fields too).
     s.fields.clear(); s.old.clear();
+    const wordList all(mesh_.sortedNames<FieldType>());
+    DynamicList<word> keep;
+    forAll(all, i)
+    {
+        if (!all[i].endsWith("_0") && all[i].find("_mpmiceSaved") == string::npos) keep.append(all[i]);
+    }
+    const wordList names(keep);
+    const label n = names.size();
     s.fields.setSize(n); s.old.setSize(n); s.names.setSize(n); s.indices.setSize(n);
     label k = 0;
     forAll(names, i)
     {
-        if (names[i].endsWith("_0")) continue;
         const FieldType& f = mesh_.lookupObject<FieldType>(names[i]);
         s.names[k] = names[i];
         s.indices[k] = f.timeIndex();
