@@ -6,6 +6,7 @@
 #   run_flap.sh BIN_DIR WORKDIR implicit   # implicit_serial + IQN-ILS: converged windows, some with 2+ iterations
 #   run_flap.sh BIN_DIR WORKDIR one_way    # one_way: fluid alone, then the solid relaxes under the last forces
 #   run_flap.sh BIN_DIR WORKDIR bad_patch  # a patch name the case lacks: non-zero exit naming it and the valid ones
+#   run_flap.sh BIN_DIR WORKDIR two_ranks  # explicit on 2 MPM ranks: the same tip as on 1 (to 1e-12 m)
 set -euo pipefail
 bin="$1"; work="$2"; mode="$3"
 src="$(cd "$(dirname "$0")/../../.." && pwd)"
@@ -21,7 +22,7 @@ case "$mode" in
             extra=$'  max_iterations: 20\n  acceleration: {type: iqn_ils, relaxation: 0.5}\n  convergence: [{field: interface_displacement, type: relative, limit: 1.0e-4, strict: true}]' ;;
   one_way) ifmode=one_way; damping=8 ;;
   bad_patch) patch=noSuchPatch ;;
-  explicit) ;;
+  explicit|two_ranks) ;;
   *) echo "unknown mode $mode" >&2; exit 2 ;;
 esac
 sed -e 's/end: 5.0/end: 0.2/' -e 's/spacing: \[0.025, 0.025\]/spacing: [0.05, 0.05]/' \
@@ -35,6 +36,10 @@ fi
 
 status=0
 "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" > log.txt 2>&1 || status=$?
+if [ "$mode" = two_ranks ] && [ "$status" -eq 0 ]; then
+  cp out/flap_openfoam_probes.csv serial_probes.csv
+  "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" --mpm-ranks 2 > log.txt 2>&1 || status=$?
+fi
 fail() { echo "FAIL ($mode): $*" >&2; grep -a -v "^GAMG\|^smooth\|^DIC\|^time step\|^Courant" log.txt | tail -40 >&2; exit 1; }
 
 if [ "$mode" = bad_patch ]; then
@@ -53,6 +58,10 @@ awk -F, 'NR > 1 { for (i = 2; i <= 9; ++i) if ($i != $i + 0 || $i == "nan" || $i
                   if (NR > 3 && $7 <= 0) bad = 1 } END { exit bad }' "$csv" || fail "non-finite values or no drag in $csv"
 tip=$(tail -n1 "$probes" | cut -d, -f5)
 case "$mode" in
+  two_ranks)
+    grep -q "2 MPM + 1 pimpleFoam rank" log.txt || fail "not launched on 2 MPM ranks"
+    paste -d, serial_probes.csv "$probes" | awk -F, 'NR > 1 { for (i = 3; i <= 6; ++i) { d = $i - $(i + 6); if (d < 0) d = -d; if (d > 1e-12) bad = 1 } }
+      END { exit bad }' || fail "the tip on 2 MPM ranks differs from 1 rank" ;;
   explicit)
     awk -F, 'NR > 1 && ($4 != 1 || $6 < 1) { exit 1 }' "$csv" || fail "explicit windows take one iteration and MPM sub-steps"
     awk -v u="$tip" 'BEGIN { exit !(u > 1e-3) }' || fail "tip x-displacement $tip: the flow must push the flap downstream" ;;
