@@ -6,7 +6,8 @@
 // 1. Start MPI, read and validate the scene (errors name file, line and key; exit 2).
 // 2. Build both solvers on the same decomposition.
 // 3. Step to time.end: monolithic-style schedule, four in-memory exchange points per step.
-// 4. Output at each output time: HDF5/XDMF (fluid fields, particles), conservation CSV.
+// 4. Output at each output time: HDF5/XDMF (fluid fields, particles), conservation CSV; the
+//    coupling log and the probes (output.probes: <scene>_probes.csv) at t = 0 and every step.
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "mpmice/common/run_output.h"
 #include "parallel/mpi_session.h"
 #include "scene/scene.h"
+#include "solver/probes.h"
 #include "util/progress.h"
 
 using namespace mpmice;
@@ -53,6 +55,9 @@ int main(int argc, char** argv) {
       for (const auto& f : driver.schedule().measuredFields()) cols.push_back("residual_" + f);
       log = std::make_unique<core::CsvWriter>(comm, scene.output.directory + "/" + scene.name + "_coupling.csv", cols);
     }
+    // The probes' particles (output.probes): position and displacement at t = 0 and every step.
+    const auto probes = mpm::ProbeRecorder::fromScene(driver.mpm());
+    if (probes) probes->record(driver.mpm());
     double tPrev = 0;
     long unconverged = 0, iterations = 0;
     driver.run(scene.time.end, [&] {
@@ -70,6 +75,7 @@ int main(int argc, char** argv) {
         row.insert(row.end(), r.residuals.begin(), r.residuals.end());
         log->row(row);
       }
+      if (probes) probes->record(driver.mpm());
       if (out.due(driver.time())) write();
       progress.step(static_cast<int>(driver.steps()), driver.time(), driver.time() - tPrev,
                     {{"iters", double(r.iterations)}});

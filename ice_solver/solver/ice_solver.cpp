@@ -72,7 +72,30 @@ double IceSolver::stableTimeStep() const {
     rate = std::max(rate, s);
   });
   rate = comm_.max(rate);
-  return rate > 0 ? cfl_ / rate : dtMax_;
+  double dt = rate > 0 ? cfl_ / rate : dtMax_;
+  // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
+  // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
+  // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > 1e-6).
+  // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
+  // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
+  // while m / (theta V) stays the cell's real mass.
+  if (anyViscous_) {
+    double inv2 = 0;
+    for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
+    double nu = 0;
+    for (const MaterialState& m : st_.mat) {
+      if (m.external || !(m.viscosity > 0)) continue;
+      const double* th = m.theta.data();
+      const double* mass = m.mass.data();
+      forEach(owned_, [&](int i, int j, int k) {
+        const std::int64_t c = sb.index(i, j, k);
+        if (th[c] > 1e-6 && mass[c] > 0) nu = std::max(nu, m.viscosity * th[c] * V / mass[c]);
+      });
+    }
+    nu = comm_.max(nu);
+    if (nu > 0) dt = std::min(dt, 1.0 / (2.0 * nu * inv2));
+  }
+  return dt;
 }
 
 void IceSolver::step() {

@@ -44,6 +44,8 @@ class IceSolver {
   // ---- uncoupled driving
   /// One step of size min(stable, dt_max, t_end - t).
   void step();
+  /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
+  /// and with viscous fluids also the explicit viscous bound 1 / (2 nu sum_d dx_d^-2), nu = mu / rho.
   [[nodiscard]] double stableTimeStep() const;
   [[nodiscard]] double time() const { return t_; }
   [[nodiscard]] long steps() const { return nsteps_; }

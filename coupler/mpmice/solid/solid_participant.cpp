@@ -10,6 +10,7 @@
 #include "mpmice/common/run_output.h"
 #include "mpmice/common/implicit_iteration.h"
 #include "mpmice/solid/solid_side.h"
+#include "solver/probes.h"
 #include "util/progress.h"
 
 namespace mpmice::coupler {
@@ -74,6 +75,9 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
   double t = 0;
   long n = 0;
   if (out.due(t)) output(n, t);
+  // The probes' particles (output.probes): position and displacement at t = 0 and every step.
+  const auto probes = mpm::ProbeRecorder::fromScene(mpm);
+  if (probes) probes->record(mpm);
   while (t < scene.time.end * (1 - 1e-12)) {
     if (!agreeToGoOn(p, scene, n)) break;
     double compute = 0, exchange = 0, t0 = now();
@@ -133,6 +137,7 @@ int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ost
       row.insert(row.end(), report.residuals.begin(), report.residuals.end());
       steps->row(row);
     }
+    if (probes) probes->record(mpm);
     if (out.due(t)) output(n, t);
     progress.step(static_cast<int>(n), t, dt, {{"iters", double(report.iterations)}});
   }

@@ -4,7 +4,9 @@
 // figures are the same on any number of ranks (run on 1 and 4: the block crosses rank borders).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>

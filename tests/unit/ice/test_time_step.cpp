@@ -1,0 +1,97 @@
+// The stable time step of ICE with viscous fluids: the explicit viscous bound
+// dt <= 1 / (2 nu sum_d dx_d^-2) (dx^2 / (2 dim nu) on a uniform mesh) when it is below the
+// convective-acoustic one, and nothing changes without viscosity. A velocity checkerboard, the
+// mode the explicit Laplacian amplifies first, keeps its amplitude at that step and grows beyond it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../../verification/ice/ice_test_scenes.h"
+#include "test_comm.h"
+
+using namespace mpmice;
+
+namespace {
+// A periodic 8 x 8 box of gas at rho = 1, p = 1e5, with a checkerboard u_x = U (-1)^(i+j).
+core::Scene checkerboardBox(double mu, double dy = 0.1) {
+  core::Scene s;
+  s.name = "checkerboard";
+  s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, dy, 1}, {8, 8, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.time.end = 1.0;
+  s.materials = {test::idealGas("gas")};
+  s.materials[0].viscosity = mu;
+  s.geometry = {test::region("gas", test::box({0, 0, 0}, {1, 1, 1}), {{"gas", 1.0}}, 1e5, 1.0)};
+  return s;
+}
+
+void setCheckerboard(ice::IceSolver& sol, double U) {
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    sol.state().mat[0].vel(i, j, k, 0) = (i + j) % 2 == 0 ? U : -U;
+  });
+  sol.computeEquilibriumPressure();
+}
+
+double maxSpeed(const ice::IceSolver& sol) {
+  double m = 0;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    m = std::max(m, std::abs(sol.state().mat[0].vel(i, j, k, 0)));
+  });
+  return test::comm().max(m);
+}
+
+// One step of size dt through the phases (what step() does with its own dt).
+void stepWith(ice::IceSolver& sol, double dt) {
+  sol.computeEquilibriumPressure();
+  sol.beginStep(dt);
+  sol.computeFaceVelocities();
+  sol.computePressureIncrement();
+  sol.computeFacePressure();
+  sol.computeSourcesAndLagrangian();
+  sol.exchange();
+  sol.advectFluids();
+}
+}  // namespace
+
+TEST(IceTimeStep, ViscousBoundWhenBelowTheAcousticOne) {
+  // nu = mu / rho = 100 m^2/s: dx^2 / (2 dim nu) = 0.01 / 800 = 1.25e-5 s, below the acoustic
+  // 0.4 dx / (2 (|u| + c)) ~ 5.3e-5 s.
+  ice::IceSolver sol(checkerboardBox(100.0), test::comm());
+  setCheckerboard(sol, 1.0);
+  EXPECT_NEAR(sol.stableTimeStep(), 0.01 / (2 * 2 * 100.0), 1e-12 * 1.25e-5);
+  // Unequal spacing: 1 / (2 nu (1/dx^2 + 1/dy^2)).
+  // The density is the cell's m / (theta V): a specific volume left over from an earlier
+  // equilibrium (a trace that had filled a solid's cell before the solid arrived: 1e10 m^3/kg)
+  // does not make the bound vanish.
+  const double dt = sol.stableTimeStep();
+  sol.state().mat[0].spvol(3, 3, 0) = 1e10;
+  EXPECT_EQ(sol.stableTimeStep(), dt);
+  ice::IceSolver thin(checkerboardBox(100.0, 0.05), test::comm());
+  setCheckerboard(thin, 1.0);
+  EXPECT_NEAR(thin.stableTimeStep(), 1.0 / (2 * 100.0 * (100.0 + 400.0)), 1e-12 * 1e-5);
+}
+
+TEST(IceTimeStep, UnchangedWithoutViscosityOrWhenTheAcousticBoundIsSmaller) {
+  ice::IceSolver inviscid(checkerboardBox(0.0), test::comm());
+  setCheckerboard(inviscid, 1.0);
+  const double acoustic = inviscid.stableTimeStep();
+  EXPECT_GT(acoustic, 4e-5);
+  EXPECT_LT(acoustic, 6e-5);
+  ice::IceSolver weak(checkerboardBox(0.01), test::comm());  // viscous bound 0.125 s
+  setCheckerboard(weak, 1.0);
+  EXPECT_EQ(weak.stableTimeStep(), acoustic);
+}
+
+TEST(IceTimeStep, CheckerboardKeepsItsAmplitudeAtTheViscousStepAndGrowsBeyond) {
+  ice::IceSolver sol(checkerboardBox(100.0), test::comm());
+  setCheckerboard(sol, 1.0);
+  for (int n = 0; n < 50; ++n) sol.step();
+  // At the bound the checkerboard's factor per step is 1 - 8 nu dt / dx^2 = -1 (kept, not grown).
+  EXPECT_LE(maxSpeed(sol), 1.0 + 1e-9);
+  EXPECT_GT(maxSpeed(sol), 0.5);
+  ice::IceSolver over(checkerboardBox(100.0), test::comm());
+  setCheckerboard(over, 1.0);
+  const double dt = 1.2 * over.stableTimeStep();  // factor 1 - 2.4 = -1.4 per step
+  for (int n = 0; n < 20; ++n) stepWith(over, dt);
+  EXPECT_GT(maxSpeed(over), 100.0);
+}
