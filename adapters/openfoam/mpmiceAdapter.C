@@ -142,38 +142,11 @@ void Foam::functionObjects::mpmiceAdapter::openCsv()
     csv_() << "time,Fx,Fy,Fz" << endl;
 }
 
-Foam::vector Foam::functionObjects::mpmiceAdapter::patchForce()
+Foam::vector Foam::functionObjects::mpmiceAdapter::patchForce(const vectorField& f) const
 {
-    vector force(Zero);
-
-    const vectorField& Sf = mesh_.Sf().boundaryField()[patchi_];
-
-    if (foundObject<volScalarField>(pName_))
-    {
-        const scalarField& pb =
-            lookupObject<volScalarField>(pName_).boundaryField()[patchi_];
-        force += sum(pb*Sf);
-    }
-
-    if (haveNu_ && foundObject<volVectorField>(UName_))
-    {
-        const volVectorField& U = lookupObject<volVectorField>(UName_);
-        const volTensorField gradU(fvc::grad(U));
-        const symmTensorField devR
-        (
-            -nu_*dev(twoSymm(gradU.boundaryField()[patchi_]))
-        );
-        force += sum(Sf & devR);
-    }
-    else if (!notedNoViscous_)
-    {
-        Info<< type() << " " << name() << ": no " << UName_ << " field or nu;"
-            << " viscous force left 0" << endl;
-        notedNoViscous_ = true;
-    }
-
+    vector force(sum(f));
     reduce(force, sumOp<vector>());
-    return rho_*force;
+    return force;
 }
 
 Foam::tmp<Foam::vectorField>
@@ -191,6 +164,12 @@ Foam::functionObjects::mpmiceAdapter::faceForces()
         const volVectorField& U = lookupObject<volVectorField>(UName_);
         const volTensorField gradU(fvc::grad(U));
         f += Sf & (-nu_*dev(twoSymm(gradU.boundaryField()[patchi_])));
+    }
+    else if (!notedNoViscous_)
+    {
+        Info<< type() << " " << name() << ": no " << UName_ << " field or nu;"
+            << " viscous force left 0" << endl;
+        notedNoViscous_ = true;
     }
     f *= rho_;
     return tf;
@@ -321,9 +300,10 @@ void Foam::functionObjects::mpmiceAdapter::restore()
 
 bool Foam::functionObjects::mpmiceAdapter::execute()
 {
+    // One pass over the patch per step: the face forces feed the coupling and the log.
+    const vectorField f(faceForces());
     if (bridge_ && coupled_)
     {
-        const vectorField f(faceForces());
         List<scalar> ff(3*f.size());
         forAll(f, i) { for (direction d = 0; d < 3; ++d) ff[3*i + d] = f[i][d]; }
         const label nPoints = mesh_.boundaryMesh()[patchi_].nPoints();
@@ -353,7 +333,7 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
             checkpoint();
         }
     }
-    const vector F = patchForce();
+    const vector F = patchForce(f);
     if (csv_.valid())
     {
         csv_() << time_.timeOutputValue() << ',' << F.x() << ',' << F.y() << ','
