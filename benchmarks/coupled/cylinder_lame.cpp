@@ -17,7 +17,7 @@
 #include <regex>
 #include <string>
 
-#include "io/output_reader.h"
+#include "core/io/output_reader.h"
 
 namespace fs = std::filesystem;
 using mpmice::core::Centering;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/output_reader.h"
+#include "core/io/output_reader.h"
 #include "riemann_exact.h"
 
 namespace {

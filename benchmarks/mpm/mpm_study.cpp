@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "mpm_problems.h"
-#include "parallel/mpi_session.h"
+#include "core/parallel/mpi_session.h"
 
 using namespace mpmice;
 using namespace mpmice::mpm;

@@ -2,7 +2,7 @@
 // tests on every rank, prints results on rank 0 only, and fails the launch if any rank failed.
 #include <gtest/gtest.h>
 
-#include "parallel/mpi_session.h"
+#include "core/parallel/mpi_session.h"
 #include "test_comm.h"
 
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // The communicator of an MPI test executable, handed over by tests/support/mpi_gtest_main.cpp.
-#include "parallel/comm.h"
+#include "core/parallel/comm.h"
 
 namespace mpmice::test {
 const core::Comm& comm();

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "launch/participant.h"
-#include "parallel/comm.h"
-#include "scene/scene.h"
-#include "surface/surface_protocol.h"
+#include "coupler/launch/participant.h"
+#include "core/parallel/comm.h"
+#include "core/scene/scene.h"
+#include "couplings/surface/surface_protocol.h"
 
 using namespace mpmice;
 

@@ -4,7 +4,7 @@
  * can call the coupler (C++20) without sharing any C++ type. The bridge is the fluid's launch
  * layer: it initialises MPI if the program has not (a serial OpenFOAM solver does not), joins
  * the MPMD launch as the participant "openfoam", checks the scene with the solid (handshake) and
- * carries the interface data of coupler/surface/surface_protocol.h.
+ * carries the interface data of src/couplings/surface/surface_protocol.h.
  *
  * Every function returns 0 on success; on failure non-zero, and mpmice_bridge_error() says why
  * (the caller stops the program with that message: OpenFOAM's FatalError).

@@ -13,11 +13,11 @@
 #include <string>
 #include <thread>
 
-#include "exchange/cell_exchange.h"
-#include "launch/handshake.h"
-#include "launch/participant.h"
-#include "launch/timed_wait.h"
-#include "parallel/mpi_session.h"
+#include "coupler/exchange/cell_exchange.h"
+#include "coupler/launch/handshake.h"
+#include "coupler/launch/participant.h"
+#include "coupler/launch/timed_wait.h"
+#include "core/parallel/mpi_session.h"
 
 using namespace mpmice;
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "io/output_reader.h"
+#include "core/io/output_reader.h"
 
 using mpmice::core::Centering;
 using mpmice::core::OutputReader;

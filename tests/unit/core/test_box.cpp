@@ -1,8 +1,8 @@
 // Box algebra and mesh index spaces.
 #include <gtest/gtest.h>
 
-#include "mesh/box.h"
-#include "mesh/mesh.h"
+#include "core/mesh/box.h"
+#include "core/mesh/mesh.h"
 
 using namespace mpmice::core;
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "parallel/decomposition.h"
+#include "core/parallel/decomposition.h"
 
 using namespace mpmice::core;
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parallel/ghost_exchange.h"
+#include "core/parallel/ghost_exchange.h"
 #include "test_comm.h"
 
 using namespace mpmice::core;

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "acceleration/acceleration.h"
-#include "acceleration/iqn_ils.h"
-#include "acceleration/relaxation.h"
-#include "convergence/convergence_measure.h"
+#include "coupler/acceleration/acceleration.h"
+#include "coupler/acceleration/iqn_ils.h"
+#include "coupler/acceleration/relaxation.h"
+#include "coupler/convergence/convergence_measure.h"
 #include "test_comm.h"
 
 using namespace mpmice;

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "mapping/mapping.h"
-#include "mapping/nearest_neighbor.h"
-#include "mapping/point_cloud.h"
-#include "mapping/rbf.h"
+#include "coupler/mapping/mapping.h"
+#include "coupler/mapping/nearest_neighbor.h"
+#include "coupler/mapping/point_cloud.h"
+#include "coupler/mapping/rbf.h"
 
 using namespace mpmice::coupler;
 

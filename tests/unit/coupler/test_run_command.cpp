@@ -3,9 +3,9 @@
 
 #include <sstream>
 
-#include "cli/openfoam_case.h"
-#include "cli/run_command.h"
-#include "scene/scene.h"
+#include "coupler/cli/openfoam_case.h"
+#include "coupler/cli/run_command.h"
+#include "core/scene/scene.h"
 
 using namespace mpmice;
 

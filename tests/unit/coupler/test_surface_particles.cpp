@@ -1,12 +1,12 @@
-// The surface particles of a solid (coupler/surface/solid/surface_particles.h): the outer layer of
+// The surface particles of a solid (src/couplings/surface/solid/surface_particles.h): the outer layer of
 // a flap's particles, the same set and order on any number of ranks.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "scene/scene.h"
-#include "solver/mpm_solver.h"
-#include "surface/solid/surface_particles.h"
+#include "core/scene/scene.h"
+#include "mpm/solver/mpm_solver.h"
+#include "couplings/surface/solid/surface_particles.h"
 #include "test_comm.h"
 
 using namespace mpmice;

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "../../verification/ice/ice_test_scenes.h"
-#include "advection/limiter.h"
+#include "ice/advection/limiter.h"
 #include "test_comm.h"
 
 using namespace mpmice;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "eos/eos.h"
+#include "ice/eos/eos.h"
 
 using namespace mpmice;
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "eos/eos.h"
-#include "exchange/pointwise_exchange.h"
-#include "pressure/equilibrium_pressure.h"
+#include "ice/eos/eos.h"
+#include "ice/exchange/pointwise_exchange.h"
+#include "ice/pressure/equilibrium_pressure.h"
 
 using namespace mpmice;
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/csv_writer.h"
+#include "core/io/csv_writer.h"
 
 using namespace mpmice::core;
 namespace fs = std::filesystem;

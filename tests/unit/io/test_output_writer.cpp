@@ -10,8 +10,8 @@
 #include <regex>
 #include <sstream>
 
-#include "io/output_reader.h"
-#include "io/output_writer.h"
+#include "core/io/output_reader.h"
+#include "core/io/output_writer.h"
 #include "test_comm.h"
 
 using namespace mpmice::core;

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "util/progress.h"
+#include "core/util/progress.h"
 
 using namespace mpmice::core;
 

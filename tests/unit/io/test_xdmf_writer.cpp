@@ -1,7 +1,7 @@
 // XdmfWriter: the text it renders for 1D/2D/3D meshes, and how a restart replaces later steps.
 #include <gtest/gtest.h>
 
-#include "io/xdmf_writer.h"
+#include "core/io/xdmf_writer.h"
 
 using namespace mpmice::core;
 

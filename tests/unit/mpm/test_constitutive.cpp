@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "material/constitutive_model.h"
-#include "material/j2_plasticity.h"
-#include "material/solid_bulk_eos.h"
-#include "particles/particle_set.h"
+#include "mpm/material/constitutive_model.h"
+#include "mpm/material/j2_plasticity.h"
+#include "core/material/solid_bulk_eos.h"
+#include "mpm/particles/particle_set.h"
 
 using namespace mpmice;
 using namespace mpmice::mpm;

@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "mpm_problems.h"
-#include "parallel/comm.h"
+#include "core/parallel/comm.h"
 #include "serial_mpi.h"
 
 using namespace mpmice;

@@ -1,4 +1,4 @@
-// ProbeRecorder (mpm_solver/solver/probes.h): a probe follows the particle nearest to its point,
+// ProbeRecorder (src/mpm/solver/probes.h): a probe follows the particle nearest to its point,
 // found by global id wherever it migrates. A free elastic block in uniform motion moves rigidly,
 // so the probe's displacement is v t and its position x0 + v t; the chosen particle and the
 // figures are the same on any number of ranks (run on 1 and 4: the block crosses rank borders).
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "mpm_problems.h"
-#include "solver/probes.h"
+#include "mpm/solver/probes.h"
 #include "test_comm.h"
 
 using namespace mpmice;

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "shape/shape_function.h"
+#include "mpm/shape/shape_function.h"
 
 using namespace mpmice::mpm;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mpm_problems.h"
-#include "parallel/comm.h"
+#include "core/parallel/comm.h"
 #include "serial_mpi.h"
 
 using namespace mpmice;

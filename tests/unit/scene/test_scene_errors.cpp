@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
+#include "core/scene/scene.h"
 
 namespace mpmice::core {
 namespace {

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "scene/model_catalog.h"
-#include "scene/scene.h"
+#include "core/scene/model_catalog.h"
+#include "core/scene/scene.h"
 
 namespace mpmice::core {
 namespace {

@@ -1,8 +1,8 @@
 // Shape membership at hand-picked points, in 2D and 3D, and shapes as read from a scene.
 #include <gtest/gtest.h>
 
-#include "scene/scene.h"
-#include "scene/shape.h"
+#include "core/scene/scene.h"
+#include "core/scene/shape.h"
 
 namespace mpmice::core {
 namespace {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "riemann_exact.h"
-#include "scene/scene.h"
-#include "solver/ice_solver.h"
+#include "core/scene/scene.h"
+#include "ice/solver/ice_solver.h"
 
 namespace mpmice::test {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "ice_test_scenes.h"
-#include "material/solid_bulk_eos.h"
+#include "core/material/solid_bulk_eos.h"
 #include "test_comm.h"
 
 using namespace mpmice;

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
-#include "solver/mpm_solver.h"
+#include "core/scene/scene.h"
+#include "mpm/solver/mpm_solver.h"
 
 namespace mpmice::mpm::problems {
 

@@ -1,0 +1,24 @@
+#pragma once
+/// @brief The launch layer: initialises and finalises MPI for a program.
+///
+/// This is the only place in the project that names MPI_COMM_WORLD. Programs create one
+/// MpiSession in main() and pass world() (or a sub-communicator split from it by the coupler's
+/// launch code) to the libraries.
+#include "core/parallel/comm.h"
+
+namespace mpmice::core {
+
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  /// Every process of the launch (all programs of an MPMD launch).
+  [[nodiscard]] Comm world() const;
+  /// Aborts every process of the launch with the given code.
+  [[noreturn]] static void abortAll(int code);
+};
+
+}  // namespace mpmice::core

@@ -1,0 +1,25 @@
+#include "core/scene/scene.h"
+
+namespace mpmice::core {
+
+std::string SourceLoc::str() const {
+  std::string s = file.empty() ? std::string("<scene>") : file;
+  if (line > 0) {
+    s.append(1, ':').append(std::to_string(line));
+    if (column > 0) s.append(1, ':').append(std::to_string(column));
+  }
+  return s;
+}
+
+namespace {
+std::string composeMessage(const SourceLoc& where, const std::string& key, const std::string& what) {
+  std::string msg = where.str() + ": ";
+  if (!key.empty()) msg += key + ": ";
+  return msg + what;
+}
+}  // namespace
+
+SceneError::SceneError(const SourceLoc& where, const std::string& key, const std::string& what)
+    : std::runtime_error(composeMessage(where, key, what)), where_(where), key_(key) {}
+
+}  // namespace mpmice::core

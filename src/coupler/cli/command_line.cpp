@@ -1,0 +1,42 @@
+#include "coupler/cli/command_line.h"
+
+#include "coupler/cli/check_command.h"
+#include "coupler/cli/run_command.h"
+#include "core/scene/did_you_mean.h"
+
+namespace mpmice::coupler {
+
+std::string usage() {
+  return "usage: coupler <command> [options]\n"
+         "\n"
+         "commands:\n"
+         "  check [--quiet] <scene.yaml>   validate a scene; print it as understood (defaults filled in)\n"
+         "                                 and a one-line summary; exit 0 if valid, 2 if not\n"
+         "  run [--mpm-ranks N] [--ice-ranks N] [--dry-run] <scene.yaml>\n"
+         "                                 compose, print and run the MPMD launch of mpm_solver and\n"
+         "                                 ice_solver on the scene (ranks from coupling.ranks)\n"
+         "\n"
+         "options:\n"
+         "  -h, --help                     this text\n";
+}
+
+int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.empty()) {
+    err << "coupler: no command given\n\n" << usage();
+    return 2;
+  }
+  const std::string& command = args.front();
+  if (command == "-h" || command == "--help" || command == "help") {
+    out << usage();
+    return 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "check") return runCheck(rest, out, err);
+  if (command == "run") return runRun(rest, out, err);
+  err << "coupler: unknown command '" << command << "'"
+      << core::scene_detail::didYouMean(command, {"check", "run", "help"}) << "\n\n"
+      << usage();
+  return 2;
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,90 @@
+#include "coupler/cli/openfoam_case.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+
+namespace mpmice::coupler {
+
+namespace fs = std::filesystem;
+
+std::string adapterLibraryPath(const std::string& binDir) {
+  return (fs::path(binDir) / "adapters" / "openfoam" / "libmpmiceFoamAdapter.so").string();
+}
+
+std::string adapterEntry(const std::string& adapterLibrary, const std::string& sceneFile) {
+  return "    // added by `coupler run`: the fluid side of the surface coupling\n"
+         "    mpmiceAdapter\n    {\n        type    mpmiceAdapter;\n        libs    (\"" +
+         adapterLibrary + "\");\n        scene   \"" + sceneFile + "\";\n    }\n";
+}
+
+std::string withFunctionObject(const std::string& text, const std::string& entry) {
+  // The top-level `functions` keyword, then its opening brace (same or a later line).
+  const std::regex key(R"((^|\n)functions\s*\{)");
+  std::smatch m;
+  if (std::regex_search(text, m, key)) {
+    const auto at = static_cast<std::size_t>(m.position(0) + m.length(0));
+    return text.substr(0, at) + "\n" + entry + text.substr(at);
+  }
+  return text + "\nfunctions\n{\n" + entry + "}\n";
+}
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
+                                std::ostream& out) {
+  const auto& iface = scene.coupling.interface;
+  const std::string where = iface.where.str();
+  fs::path src = iface.openfoam_case;
+  if (src.is_relative()) src = fs::absolute(fs::path(sceneFile)).parent_path() / src;
+  if (!fs::exists(src / "system" / "controlDict"))
+    throw std::invalid_argument(where + ": coupling.interface.case: '" + iface.openfoam_case + "' (" + src.string() +
+                                ") is not an OpenFOAM case: no system/controlDict there");
+  const std::string lib = adapterLibraryPath(binDir);
+  if (!fs::exists(lib))
+    throw std::invalid_argument("coupler run: the OpenFOAM adapter " + lib +
+                                " is not built (needs OpenFOAM's headers: scripts/openfoam_headers.sh, then cmake)");
+  const fs::path dst = fs::absolute(fs::path(scene.output.directory) / src.filename());
+  std::error_code ec;
+  fs::remove_all(dst, ec);
+  fs::create_directories(dst.parent_path());
+  fs::copy(src, dst, fs::copy_options::recursive);
+  const fs::path cd = dst / "system" / "controlDict";
+  std::string text = withFunctionObject(slurp(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
+  {
+    // One end time: the scene's (two-way: both sides run to it; one-way: the fluid runs to it,
+    // then the solid relaxes under the last forces for as long again).
+    std::ostringstream e;
+    e.precision(17);
+    e << "$1endTime         " << scene.time.end << ";";
+    text = std::regex_replace(text, std::regex(R"((^|\n)endTime\s+[^;]*;)"), e.str());
+  }
+  std::ofstream(cd) << text;
+  if (!fs::exists(dst / "constant" / "polyMesh" / "points") && !fs::exists(dst / "constant" / "polyMesh" / "points.gz")) {
+    const std::string cmd = "WM_PROJECT_DIR=/usr/share/openfoam blockMesh -case '" + dst.string() + "' > '" +
+                            (dst / "log.blockMesh").string() + "' 2>&1";
+    out << "coupler: blockMesh -case " << dst.string() << "\n" << std::flush;
+    const int status = std::system(cmd.c_str());
+    if (status != 0) {
+      std::string log = slurp(dst / "log.blockMesh");
+      if (log.size() > 2000) log = log.substr(log.size() - 2000);
+      throw std::runtime_error("coupler run: blockMesh failed for " + dst.string() + ":\n" + log);
+    }
+  }
+  return dst.string();
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,30 @@
+#pragma once
+/// @brief The OpenFOAM side of `coupler run` for coupling.fluid: openfoam.
+///
+/// The case named by coupling.interface.case (relative to the scene file) is copied fresh to
+/// <output.directory>/<case name>, its system/controlDict gets the mpmiceAdapter function object
+/// (library, scene), and blockMesh builds its mesh when the case has none. The solver then runs
+/// in that copy (`<solver> -case <copy>`), serial, as one participant of the MPMD launch.
+#include <ostream>
+#include <string>
+
+#include "core/scene/scene.h"
+
+namespace mpmice::coupler {
+
+/// The function object entry `coupler run` adds to a case's controlDict.
+std::string adapterEntry(const std::string& adapterLibrary, const std::string& sceneFile);
+
+/// controlDict text with `entry` inside its `functions` dictionary (created if absent).
+std::string withFunctionObject(const std::string& controlDict, const std::string& entry);
+
+/// Prepares the working copy; returns its absolute path. Throws std::invalid_argument naming the
+/// scene key (missing case, no controlDict, missing adapter library) and std::runtime_error when
+/// blockMesh fails (with the tail of its log).
+std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
+                                std::ostream& out);
+
+/// The adapter library under a build directory.
+std::string adapterLibraryPath(const std::string& binDir);
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,44 @@
+#pragma once
+/// @brief `coupler run [options] <scene.yaml>`: composes the MPMD launch of the two solvers,
+/// prints it, runs it, and names the participant behind any failure.
+///
+///   coupler run configs/pressurized_cylinder.yaml
+///   -> scripts/mpirun -np 1 <bin>/mpm_solver/mpm_solver s.yaml : -np 1 <bin>/ice_solver/ice_solver s.yaml
+///   coupler run configs/flap_openfoam.yaml            (coupling.fluid: openfoam)
+///   -> scripts/mpirun -x WM_PROJECT_DIR -np 1 <bin>/mpm_solver/mpm_solver s.yaml
+///        : -np 1 pimpleFoam -case <output>/<case>   (the case prepared by cli/openfoam_case.h)
+///
+/// Rank counts come from the scene's coupling.ranks (mpm, ice) unless --mpm-ranks / --ice-ranks
+/// override them. --dry-run prints the line without running it. The launch's output streams
+/// through; when it ends non-zero, the world ranks named in mpirun's messages are translated
+/// into participants ("world rank 1 is ice_solver rank 0").
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/scene/scene.h"
+
+namespace mpmice::coupler {
+
+struct LaunchPlan {
+  std::vector<std::string> argv;        // the full command line
+  std::vector<std::string> programs;    // program name per participant, in launch order
+  std::vector<int> ranks;               // ranks per participant
+  std::vector<std::string> executables; // per participant (checked before the launch)
+  [[nodiscard]] std::string commandLine() const;
+  /// "ice_solver rank 0" for a world rank; empty when out of range.
+  [[nodiscard]] std::string describeWorldRank(int worldRank) const;
+};
+
+/// The launch for `sceneFile` with binaries under binDir (<binDir>/mpm_solver/mpm_solver, ...).
+/// coupling.fluid openfoam: mpm_solver and the scene's OpenFOAM solver (serial) in `fluidCase`.
+LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "");
+
+/// Runs `coupler run` on args (after "run"); returns the exit status.
+int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+/// Explains the world ranks that mpirun's failure text mentions (one line each).
+std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::string& launchOutput);
+
+}  // namespace mpmice::coupler

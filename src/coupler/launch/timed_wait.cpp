@@ -1,0 +1,34 @@
+#include "coupler/launch/timed_wait.h"
+
+#include <chrono>
+#include <sstream>
+#include <thread>
+
+namespace mpmice::coupler {
+
+void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what) {
+  if (reqs.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  int spins = 0;
+  for (;;) {
+    int done = 0;
+    MPI_Testall(static_cast<int>(reqs.size()), reqs.data(), &done, MPI_STATUSES_IGNORE);
+    if (done) return;
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (waited > timeout) {
+      for (auto& r : reqs)
+        if (r != MPI_REQUEST_NULL) {
+          MPI_Cancel(&r);
+          MPI_Request_free(&r);
+        }
+      std::ostringstream os;
+      os << "coupler: no " << what << " from participant '" << peer << "' within " << timeout
+         << " s (coupling.timeout); it has stopped or hangs";
+      throw CouplingTimeout(os.str());
+    }
+    // Spin briefly for low latency, then yield the core (2 cores, several ranks each).
+    if (++spins > 200) std::this_thread::sleep_for(std::chrono::microseconds(spins > 2000 ? 500 : 20));
+  }
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,326 @@
+#include "couplings/surface/solid/surface_solid_participant.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "coupler/acceleration/acceleration.h"
+#include "coupler/convergence/convergence_measure.h"
+#include "core/io/csv_writer.h"
+#include "coupler/mapping/mapping.h"
+#include "mpm/solver/mpm_output.h"
+#include "mpm/solver/mpm_solver.h"
+#include "mpm/solver/probes.h"
+#include "couplings/surface/solid/surface_particles.h"
+#include "couplings/surface/surface_protocol.h"
+#include "core/util/progress.h"
+
+namespace mpmice::coupler {
+
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+PointCloud cloudOf(const std::vector<double>& xyz) {
+  PointCloud c;
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) c.add(xyz[i], xyz[i + 1], xyz[i + 2]);
+  return c;
+}
+
+/// The surface particles' data by slot of the global SurfaceCloud order.
+class SurfaceSlots {
+ public:
+  explicit SurfaceSlots(const SurfaceCloud& c) {
+    for (std::size_t k = 0; k < c.size(); ++k) slot_[c.ids[k]] = k;
+    n_ = c.size();
+  }
+  /// Sets fsurf of the local surface particles from per-slot forces (3 per slot).
+  void setForces(mpm::ParticleSet& p, const std::vector<double>& f) const {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.surface[i] == 0.0) continue;
+      const std::size_t k = slot_.at(p.id[i]);
+      for (int d = 0; d < 3; ++d) p.fsurf[d][i] = f[3 * k + static_cast<std::size_t>(d)];
+    }
+  }
+  /// Displacements x - x0 per slot (3 per slot), summed over the ranks.
+  std::vector<double> displacements(const mpm::ParticleSet& p, const core::Comm& comm) const {
+    std::vector<double> u(3 * n_, 0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.surface[i] == 0.0) continue;
+      const std::size_t k = slot_.at(p.id[i]);
+      for (int d = 0; d < 3; ++d) u[3 * k + static_cast<std::size_t>(d)] = p.x[d][i] - p.x0[d][i];
+    }
+    comm.sumInPlace(u);
+    return u;
+  }
+
+ private:
+  std::unordered_map<std::int64_t, std::size_t> slot_;
+  std::size_t n_ = 0;
+};
+
+Eigen::VectorXd asVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+}  // namespace
+
+int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
+  const core::InterfaceSpec& iface = scene.coupling.interface;
+  handshake(p, surfaceHandshakeSections(scene));
+  const core::Comm& comm = p.local();
+  const bool root = comm.root();
+  const int dim = scene.mesh.dim();
+  const bool oneWay = iface.mode == "one_way";
+  const bool implicit = scene.coupling.schedule == "implicit_serial";
+
+  mpm::MpmSolver mpm(scene, comm);
+  mpm.enableSurfaceForces();
+  const int material = scene.materialIndex(iface.solid);
+  const long long nSurface = comm.sum(static_cast<long long>(markSurfaceParticles(mpm, material)));
+  if (nSurface == 0)
+    throw std::invalid_argument("coupling.interface.solid: material '" + iface.solid + "' has no particles");
+  const SurfaceCloud cloud = gatherSurfaceCloud(mpm);
+  const SurfaceSlots slots(cloud);
+
+  const SurfaceSetup setup = receiveSetup(p);
+  checkFluidTime(setup, scene);
+  const double forceScale = dim == 2 ? 1.0 / setup.depth : 1.0;  // 2D MPM: per unit depth
+  const PointCloud particles = cloudOf(cloud.x0);
+  auto forceMap = makeMapping(iface.mapping, iface.rbf_support);
+  forceMap->compute(particles, cloudOf(setup.faceCentres), dim);
+  auto dispMap = makeMapping(iface.mapping, iface.rbf_support);
+  dispMap->compute(particles, cloudOf(setup.pointCoords), dim);
+
+  core::Progress progress(log, comm, 0.0, oneWay ? 2 * scene.time.end : scene.time.end,
+                          core::ProgressOptions{2.0, 0});
+  progress.start(scene.name + " (mpm_solver, surface-coupled to '" + p.peerName() + "', " + iface.mode + ", " +
+                     scene.coupling.schedule + ")",
+                 scene.mesh.describe(), comm.size());
+  if (root) {
+    log << "  interface: " << nSurface << " surface particles of '" << iface.solid << "'; patch '" << iface.patch
+        << "' with " << setup.faces << " faces, " << setup.points << " points (depth " << setup.depth
+        << " m); mapping " << forceMap->name() << "; window " << setup.dt << " s\n"
+        << std::flush;
+  }
+
+  std::unique_ptr<mpm::MpmOutput> output;
+  std::unique_ptr<core::CsvWriter> csv;
+  if (scene.output.enabled) {
+    output = std::make_unique<mpm::MpmOutput>(mpm);
+    csv = std::make_unique<core::CsvWriter>(
+        comm, scene.output.directory + "/" + scene.name + "_coupling.csv",
+        std::vector<std::string>{"window", "time", "dt", "iterations", "converged", "substeps", "force_x", "force_y",
+                                 "force_z", "residual", "compute_s", "exchange_s"});
+  }
+  const double interval = scene.output.interval > 0 ? scene.output.interval : 1e300;
+  double nextOut = interval;
+  if (output) {
+    mpm.projectToGrid();
+    output->write(mpm);
+  }
+  const auto probes = mpm::ProbeRecorder::fromScene(mpm);  // collective; null without probes
+  if (probes) probes->record(mpm);
+
+  // Implicit: the iterate is the displacement of the patch points; measures and acceleration
+  // work on data every solid rank holds in full (a communicator of one).
+  const core::Comm self(MPI_COMM_SELF);
+  struct Measured {
+    std::string field;
+    bool strict;
+    std::unique_ptr<ConvergenceMeasure> m;
+  };
+  std::vector<Measured> measures;
+  std::unique_ptr<Acceleration> accel;
+  if (implicit) {
+    auto conv = scene.coupling.convergence;
+    if (conv.empty()) conv.push_back({"interface_displacement", "relative", 1e-4, true});
+    for (const auto& c : conv) {
+      if (c.field != "interface_displacement" && c.field != "interface_force")
+        throw std::invalid_argument("coupling.convergence: field '" + c.field +
+                                    "' is not exchanged by a surface coupling; valid: interface_displacement, "
+                                    "interface_force");
+      measures.push_back({c.field, c.strict, makeConvergenceMeasure(c.type, c.limit)});
+    }
+    AccelerationParams a;
+    a.type = scene.coupling.acceleration.type;
+    a.relaxation = scene.coupling.acceleration.relaxation;
+    a.reuse = scene.coupling.acceleration.reuse;
+    a.filter = scene.coupling.acceleration.filter;
+    accel = makeAcceleration(a, self);
+  }
+
+  std::vector<double> dispPoints(3 * static_cast<std::size_t>(setup.points), 0.0);  // what the fluid uses
+  std::vector<double> lastForces;
+  long window = 0, substepsTotal = 0;
+  double t = 0;
+  auto mapForces = [&](const std::vector<double>& faceForces) {
+    std::vector<double> f(3 * cloud.size(), 0.0);
+    forceMap->mapConservative(faceForces.data(), f.data(), 3);
+    for (double& v : f) v *= forceScale;
+    if (dim == 2)
+      for (std::size_t k = 0; k < cloud.size(); ++k) f[3 * k + 2] = 0.0;
+    slots.setForces(mpm.particles(), f);
+  };
+  auto advanceTo = [&](double tEnd) {
+    long n = 0;
+    while (mpm.time() < tEnd * (1 - 1e-12) && mpm.time() < tEnd - 1e-15) {
+      mpm.advance(tEnd);
+      ++n;
+    }
+    return n;
+  };
+  auto solidDisplacement = [&] {
+    const std::vector<double> u = slots.displacements(mpm.particles(), comm);
+    std::vector<double> d(3 * static_cast<std::size_t>(setup.points), 0.0);
+    dispMap->mapConsistent(u.data(), d.data(), 3);
+    if (dim == 2)
+      for (int k = 0; k < setup.points; ++k) d[3 * static_cast<std::size_t>(k) + 2] = 0.0;
+    return d;
+  };
+  auto totalForce = [](const std::vector<double>& f) {
+    std::array<double, 3> s{0, 0, 0};
+    for (std::size_t i = 0; i < f.size(); ++i) s[i % 3] += f[i];
+    return s;
+  };
+  auto reply = [&](WindowAction a, int iterations, const std::vector<double>& d) {
+    sendVector(p, {double(static_cast<int>(a)), double(iterations)}, "window reply");
+    sendVector(p, d, "patch displacements");
+  };
+
+  for (;;) {
+    double compute = 0, exchange = 0, t0 = now();
+    auto lap = [&](double& bucket) {
+      const double t1 = now();
+      bucket += t1 - t0;
+      t0 = t1;
+    };
+    const std::vector<double> h = receiveVector(p, "window header");
+    if (h.size() != 3) throw std::runtime_error("coupler: malformed window header from '" + p.peerName() + "'");
+    const WindowHeader head{h[0], h[1], h[2] != 0.0};
+    std::vector<double> forces = receiveVector(p, "patch face forces");
+    if (forces.size() != 3u * std::size_t(setup.faces))
+      throw std::runtime_error("coupler: " + std::to_string(forces.size() / 3) + " face forces from '" +
+                               p.peerName() + "', expected " + std::to_string(setup.faces));
+    lap(exchange);
+    int iterations = 1;
+    bool converged = true;
+    long substeps = 0;
+    double residual = 0;
+    if (oneWay) {
+      lastForces = forces;
+      reply(WindowAction::Advance, 1, dispPoints);  // zeros: the fluid's mesh stays
+      lap(exchange);
+    } else if (!implicit) {
+      mapForces(forces);
+      substeps = advanceTo(head.tEnd);
+      dispPoints = solidDisplacement();
+      lap(compute);
+      reply(WindowAction::Advance, 1, dispPoints);
+      lap(exchange);
+    } else {
+      const auto cp = mpm.checkpoint();
+      for (auto& m : measures) m.m->newStep();
+      std::vector<double> prevForces;
+      for (int k = 1;; ++k) {
+        if (k > 1) {
+          (void)receiveVector(p, "window header (iteration " + std::to_string(k) + ")");
+          forces = receiveVector(p, "patch face forces (iteration " + std::to_string(k) + ")");
+          lap(exchange);
+        }
+        mpm.restore(cp);
+        mapForces(forces);
+        substeps = advanceTo(head.tEnd);
+        const std::vector<double> dTilde = solidDisplacement();
+        bool allStrict = true, anyStrict = false, anySuffices = false;
+        for (auto& m : measures) {
+          bool ok;
+          if (m.field == "interface_displacement")
+            ok = m.m->measure(asVector(dispPoints), asVector(dTilde), self);
+          else
+            ok = k > 1 && m.m->measure(asVector(prevForces), asVector(forces), self);
+          residual = m.m->residual();
+          if (m.strict) {
+            anyStrict = true;
+            allStrict = allStrict && ok;
+          } else {
+            anySuffices = anySuffices || ok;
+          }
+        }
+        converged = k >= scene.coupling.min_iterations && ((anyStrict && allStrict) || anySuffices);
+        iterations = k;
+        lap(compute);
+        if (converged || k >= scene.coupling.max_iterations) {
+          if (!converged && !scene.coupling.accept_unconverged) {
+            std::ostringstream os;
+            os << "coupling: the window ending at t = " << head.tEnd << " did not converge in "
+               << scene.coupling.max_iterations << " iterations (coupling.max_iterations); residual " << residual
+               << ". Raise max_iterations, relax coupling.convergence, add acceleration, or set accept_unconverged";
+            throw std::runtime_error(os.str());
+          }
+          accel->iterationsConverged();
+          dispPoints = dTilde;
+          reply(WindowAction::Advance, k, dispPoints);
+          lap(exchange);
+          break;
+        }
+        const Eigen::VectorXd next = accel->performAcceleration(asVector(dispPoints), asVector(dTilde));
+        dispPoints.assign(next.data(), next.data() + next.size());
+        prevForces = forces;
+        reply(WindowAction::Repeat, k, dispPoints);
+        lap(exchange);
+      }
+    }
+    ++window;
+    substepsTotal += substeps;
+    t = head.tEnd;
+    const auto F = totalForce(forces);
+    if (csv)
+      csv->row({double(window), t, head.dt, double(iterations), converged ? 1.0 : 0.0, double(substeps), F[0], F[1],
+                F[2], residual, compute, exchange});
+    if (probes && !oneWay) probes->record(mpm);
+    if (output && !oneWay && mpm.time() >= nextOut * (1 - 1e-12)) {
+      output->write(mpm);
+      while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
+    }
+    progress.step(static_cast<int>(window), t, head.dt, {{"iters", double(iterations)}, {"mpm_substeps", double(substeps)}});
+    if (head.last) break;
+  }
+
+  if (oneWay) {
+    // The classic sequential approach: the fluid's final forces, once, on a structure that
+    // relaxes (mpm.damping) to a static state over time.end.
+    if (root) {
+      const auto F = totalForce(lastForces);
+      log << "  one-way: the fluid's forces at t = " << t << " (total " << F[0] << ", " << F[1] << ", " << F[2]
+          << " N) now load the solid, relaxed over " << scene.time.end << " s (damping " << scene.mpm.damping
+          << " 1/s)\n"
+          << std::flush;
+    }
+    mapForces(lastForces);
+    long n = 0;
+    while (mpm.time() < scene.time.end * (1 - 1e-12)) {
+      const double dt = mpm.advance(scene.time.end);
+      ++n;
+      if (probes) probes->record(mpm);
+      if (output && mpm.time() >= nextOut * (1 - 1e-12)) {
+        output->write(mpm);
+        while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
+      }
+      progress.step(static_cast<int>(window + n), t + mpm.time(), dt);
+    }
+    substepsTotal += n;
+  }
+  if (output) output->write(mpm);
+  // Work per window: the MPM particle-steps it took (sub-cycling included).
+  const long windowsAll = oneWay ? window + (substepsTotal > 0 ? 1 : 0) : window;
+  progress.finish(static_cast<int>(windowsAll), oneWay ? t + mpm.time() : t,
+                  double(mpm.globalParticleCount()) * double(substepsTotal) / std::max(1.0, double(windowsAll)),
+                  "particle-steps");
+  return 0;
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,46 @@
+#include "couplings/volume/common/run_output.h"
+
+namespace mpmice::coupler {
+
+SideTotals SideTotals::unpack(const std::vector<double>& v) {
+  SideTotals t;
+  if (v.size() != 5) return t;
+  t.mass = v[0];
+  t.momentum = {v[1], v[2], v[3]};
+  t.energy = v[4];
+  return t;
+}
+
+RunOutput::RunOutput(const core::Scene& scene, const core::Comm& comm, const core::Decomposition& decomp,
+                     const std::string& suffix, bool writeCsv)
+    : scene_(scene), enabled_(scene.output.enabled) {
+  if (!enabled_) return;
+  writer_ = std::make_unique<core::OutputWriter>(comm, decomp, scene.output.directory, scene.name + suffix);
+  if (writeCsv)
+    csv_ = std::make_unique<core::CsvWriter>(
+        comm, scene.output.directory + "/" + scene.name + "_conservation.csv",
+        std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y",
+                                 "momentum_z", "solid_energy", "fluid_energy", "total_energy"});
+}
+
+bool RunOutput::due(double time) {
+  const bool last = time >= scene_.time.end * (1 - 1e-12);
+  if (time < next_ * (1 - 1e-12) && !last) return false;
+  const double every = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
+  while (next_ <= time * (1 + 1e-12)) next_ += every;
+  return true;
+}
+
+void RunOutput::writeFields(long step, double time, const std::vector<const core::Field*>& fields,
+                            const core::ParticleOutput* particles) {
+  if (!enabled_) return;
+  writer_->writeStep(static_cast<int>(step), time, fields, scene_.output.particles ? particles : nullptr);
+}
+
+void RunOutput::writeTotals(long step, double time, const SideTotals& s, const SideTotals& f) {
+  if (!enabled_ || !csv_) return;
+  csv_->row({double(step), time, s.mass, f.mass, s.momentum[0] + f.momentum[0], s.momentum[1] + f.momentum[1],
+             s.momentum[2] + f.momentum[2], s.energy, f.energy, s.energy + f.energy});
+}
+
+}  // namespace mpmice::coupler

@@ -1,0 +1,46 @@
+#pragma once
+/// @brief What a coupled run writes: HDF5/XDMF fields and particles at each output time, and a
+/// CSV conservation monitor (total mass, momentum and energy of the solids and the fluids).
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/io/csv_writer.h"
+#include "core/io/output_writer.h"
+#include "core/io/particle_output.h"
+#include "core/scene/scene.h"
+
+namespace mpmice::coupler {
+
+/// Totals of one side: mass, momentum (3), energy (fluid: internal + kinetic; solid: kinetic +
+/// stress work).
+struct SideTotals {
+  double mass = 0;
+  std::array<double, 3> momentum{0, 0, 0};
+  double energy = 0;
+  [[nodiscard]] std::vector<double> pack() const { return {mass, momentum[0], momentum[1], momentum[2], energy}; }
+  static SideTotals unpack(const std::vector<double>& v);
+};
+
+class RunOutput {
+ public:
+  /// Writes under scene.output.directory as <name><suffix>_*.h5 (nothing when output.enabled is
+  /// false). writeCsv: this writer also keeps the conservation CSV.
+  RunOutput(const core::Scene& scene, const core::Comm& comm, const core::Decomposition& decomp,
+            const std::string& suffix = "", bool writeCsv = true);
+  /// True when `time` has reached the next output time (and moves that on).
+  bool due(double time);
+  void writeFields(long step, double time, const std::vector<const core::Field*>& fields,
+                   const core::ParticleOutput* particles);
+  void writeTotals(long step, double time, const SideTotals& solid, const SideTotals& fluid);
+
+ private:
+  const core::Scene& scene_;
+  bool enabled_;
+  double next_ = 0;
+  std::unique_ptr<core::OutputWriter> writer_;
+  std::unique_ptr<core::CsvWriter> csv_;
+};
+
+}  // namespace mpmice::coupler

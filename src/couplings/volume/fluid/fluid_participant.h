@@ -1,0 +1,15 @@
+#pragma once
+/// @brief The fluid side of an MPMD MPM-ICE launch: ice_solver coupled to mpm_solver.
+///
+/// The mirror of runSolidParticipant: same handshake, same time steps, receives A and C, sends
+/// B and D. Writes its grid fields (HDF5/XDMF, file suffix "_fluid").
+#include <ostream>
+
+#include "coupler/launch/participant.h"
+#include "core/scene/scene.h"
+
+namespace mpmice::coupler {
+
+int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log);
+
+}  // namespace mpmice::coupler

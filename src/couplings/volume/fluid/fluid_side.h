@@ -1,0 +1,49 @@
+#pragma once
+/// @brief The fluid (ICE) side of an MPM-ICE step, in the order of the monolithic-style schedule.
+///
+///   consumeAProduceB(dt)  the solids' cell state enters as external materials (the first time,
+///                         the fluids are fitted to the volume the solids leave free); equilibrium
+///                         pressure; face velocities; pressure increment; face pressure;
+///                         pressure force on each solid
+///   consumeCProduceD()    sources and Lagrangian values; the solids' Lagrangian momentum;
+///                         pointwise implicit exchange; exchange increments of each solid
+///   finishStep()          fluids advected (the solids advect themselves)
+#include <vector>
+
+#include "couplings/volume/common/exchange_fields.h"
+#include "couplings/volume/common/run_output.h"
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::coupler {
+
+class FluidSide {
+ public:
+  FluidSide(ice::IceSolver& ice, const core::Scene& scene);
+
+  [[nodiscard]] double stableTimeStep() const { return ice_.stableTimeStep(); }
+  void consumeAProduceB(double dt);
+  void consumeCProduceD();
+  void finishStep();
+  /// Before the first step, with the solids' initial state in A: the solids enter as external
+  /// materials and the fluids are fitted to the volume they leave free (see consumeAProduceB).
+  void start();
+  /// Sets B to the fluid's current pressure and no force, D to zero (before a first step).
+  void primeOutput();
+  /// A whole step with the A and C fields as they are (partitioned schedules); produces B and D.
+  void fullStep(double dt);
+
+  [[nodiscard]] std::vector<SolidExchangeFields>& fields() { return fields_; }
+  [[nodiscard]] ice::IceSolver& solver() { return ice_; }
+  /// Mass, momentum and energy (internal + kinetic) of the fluids (collective).
+  [[nodiscard]] SideTotals totals() const;
+
+ private:
+  static std::span<const double> all(const core::Field& f) {
+    return {f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())};
+  }
+  ice::IceSolver& ice_;
+  std::vector<SolidExchangeFields> fields_;
+  bool started_ = false;  // the first step fits the fluids to the solids' volume
+};
+
+}  // namespace mpmice::coupler

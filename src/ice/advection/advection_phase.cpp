@@ -1,0 +1,231 @@
+// IceSolver phase 12: advection of the fluids' mass, momentum, total energy and volume with the
+// face velocities, in flux form (each face flux is computed once from the same values on every
+// rank that sees the face, so closed boxes conserve to round-off).
+//   mass flux   F_r = theta_f,r |u_f| dt A / v_f,r   (theta, v: donor-cell or limited linear
+//               reconstruction, time-centred: q_D +- (1 - |u_f| dt / dx) slope / 2)
+//   then F_r u_f, F_r (e_f + |u_f|^2 / 2), F_r v_f for momentum, total energy, volume.
+// The reconstructed face volume fractions are rescaled so that they sum, over the fluids, to the
+// donor-cell sum: uniform pressure and velocity stay uniform across material interfaces.
+// Donors whose outflows over all faces would exceed 90% of their mass have them scaled down
+// (positivity; conservative). Internal energy = total - kinetic; where round-off of that difference would lose more than 90%
+// of the internal energy advected directly (strong rarefactions), the direct value is used.
+#include <algorithm>
+#include <cmath>
+
+#include "ice/advection/limiter.h"
+#include "ice/exchange/pointwise_exchange.h"
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+namespace {
+constexpr double kTraceMass = 1e-200;
+constexpr double kMaxOut = 0.9;
+// Velocities below this [m/s] are zero: upwind tails ahead of waves decay geometrically and
+// would otherwise reach denormal numbers, which are two orders of magnitude slower.
+constexpr double kTinyVelocity = 1e-150;
+enum Acc { kMass = 0, kMomX, kMomY, kMomZ, kE, kVol, kEint, kNumAcc };
+}
+
+void IceSolver::advectFluids() {
+  fillMaterialGhosts(true);
+  const int dim = mesh_.dim();
+  const int nm = numMaterials();
+  const double V = mesh_.cellVolume();
+  const double dt = dt_;
+  const Limiter lim = static_cast<Limiter>(limiter_);
+  const bool second = secondOrder_;
+  const core::Box& sb = st_.press.box();
+  const std::size_t npts = static_cast<std::size_t>(sb.numPts());
+  acc_.resize(static_cast<std::size_t>(nm * kNumAcc));
+  for (int r = 0; r < nm; ++r) {
+    const MaterialState& m = st_.mat[r];
+    if (m.external) continue;
+    double* a[kNumAcc];
+    for (int q = 0; q < kNumAcc; ++q) {
+      acc_[r * kNumAcc + q].resize(npts);
+      a[q] = acc_[r * kNumAcc + q].data();
+    }
+    const double *ms = m.mass.data(), *e = m.eintL.data(), *v = m.spvolL.data();
+    const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    for (const std::int64_t c : ownedCells_) {
+      const double mass = ms[c];
+      double ke = 0;
+      for (int d = 0; d < 3; ++d) {
+        a[kMomX + d][c] = mass * u[d][c];
+        ke += u[d][c] * u[d][c];
+      }
+      a[kMass][c] = mass;
+      a[kE][c] = mass * (e[c] + 0.5 * ke);
+      a[kVol][c] = mass * v[c];
+      a[kEint][c] = mass * e[c];
+    }
+  }
+
+  if (faceFlux_.size() != static_cast<std::size_t>(nm)) {
+    faceFlux_.assign(static_cast<std::size_t>(nm), {});
+    for (auto& ff : faceFlux_)
+      for (int d = 0; d < dim; ++d) ff[d] = core::Field("flux", core::Centering::Cell, owned_.faces(d), kNumAcc, 0);
+    outScale_ = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
+  }
+  outScale_.fill(0.0);
+  const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  struct Ptr {
+    const double *th, *sv, *u[3], *e, *vL, *uf;
+    double* flux[kNumAcc];
+    double* out;
+    bool skip;
+  };
+  std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+  for (int d = 0; d < dim; ++d) {
+    const double dx = mesh_.dx(d);
+    const double A = V / dx;
+    const std::int64_t sd = strides[d];
+    const core::Box fb = owned_.faces(d);
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      Ptr& P = ptr[r];
+      P = {m.theta.data(), m.spvol.data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
+           m.spvolL.data(), m.velFace[d].data(), {}, outScale_.data(r), m.external};
+      for (int q = 0; q < kNumAcc; ++q) P.flux[q] = faceFlux_[r][d].data(q);
+    }
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t fi = fb.index(i, j, k);
+      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+      double th1[kMaxMaterials], th2[kMaxMaterials], flux[kMaxMaterials][kNumAcc];
+      double s1 = 0, s2 = 0;
+      for (int r = 0; r < nm; ++r) {
+        const Ptr& P = ptr[r];
+        th1[r] = th2[r] = 0;
+        if (P.skip) continue;
+        const double uf = P.uf[fi];
+        if (uf == 0) continue;
+        const std::int64_t D = uf > 0 ? cL : cR;
+        const double sgn = uf > 0 ? 1.0 : -1.0;
+        const double w = 0.5 * sgn * (1.0 - std::abs(uf) * dt / dx);
+        auto face = [&](const double* f) {
+          const double q0 = f[D];
+          if (!second) return q0;
+          return q0 + w * limitedSlope(lim, q0 - f[D - sd], f[D + sd] - q0);
+        };
+        th1[r] = P.th[D];
+        th2[r] = face(P.th);
+        s1 += th1[r];
+        s2 += th2[r];
+        double* fl = flux[r];
+        fl[kMass] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
+        double ke = 0;
+        for (int q = 0; q < 3; ++q) {
+          const double uq = q < dim ? face(P.u[q]) : P.u[q][D];
+          fl[kMomX + q] = uq;
+          ke += uq * uq;
+        }
+        const double ef = face(P.e);
+        fl[kE] = ef + 0.5 * ke;
+        fl[kVol] = face(P.vL);
+        fl[kEint] = ef;
+      }
+      const double scale = s2 > 0 ? s1 / s2 : 0.0;
+      const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
+      const bool ownR = owned_.contains(i, j, k);
+      for (int r = 0; r < nm; ++r) {
+        const Ptr& P = ptr[r];
+        if (th1[r] == 0 && th2[r] == 0) {
+          P.flux[0][fi] = 0;
+          continue;
+        }
+        const double* fl = flux[r];
+        const double F = fl[kMass] * th2[r] * scale;
+        P.flux[0][fi] = F;
+        for (int q = 1; q < kNumAcc; ++q) P.flux[q][fi] = F * fl[q];
+        // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
+        if (F > 0 && ownL) P.out[cL] += F;
+        if (F < 0 && ownR) P.out[cR] -= F;
+      }
+    });
+  }
+
+  // Positivity: a donor whose outflows over all its faces would exceed kMaxOut of its mass has them
+  // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
+  for (int r = 0; r < nm; ++r) {
+    const double* ms = st_.mat[r].mass.data();
+    double* sc = outScale_.data(r);
+    const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
+    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOut * ms[c] ? kMaxOut * ms[c] / sc[c] : 1.0;
+  }
+  ghosts_->fill(outScale_);
+  for (int d = 0; d < dim; ++d) {
+    const std::int64_t sd = strides[d];
+    const core::Box fb = owned_.faces(d);
+    for (int r = 0; r < nm; ++r) {
+      if (st_.mat[r].external) continue;
+      const core::Field& ff = faceFlux_[r][d];
+      const double* sc = outScale_.data(r);
+      double* a[kNumAcc];
+      const double* f[kNumAcc];
+      for (int q = 0; q < kNumAcc; ++q) {
+        a[q] = acc_[r * kNumAcc + q].data();
+        f[q] = ff.data(q);
+      }
+      forEach(fb, [&](int i, int j, int k) {
+        const std::int64_t fi = fb.index(i, j, k);
+        const double F = f[0][fi];
+        if (F == 0) return;
+        const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+        const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
+        const bool ownR = owned_.contains(i, j, k);
+        const double lam = F > 0 ? sc[cL] : sc[cR];
+        for (int q = 0; q < kNumAcc; ++q) {
+          const double v = lam * f[q][fi];
+          if (ownL) a[q][cL] -= v;
+          if (ownR) a[q][cR] += v;
+        }
+      });
+    }
+  }
+
+  for (int r = 0; r < nm; ++r) {
+    MaterialState& m = st_.mat[r];
+    if (m.external) continue;
+    const double* a[kNumAcc];
+    for (int q = 0; q < kNumAcc; ++q) a[q] = acc_[r * kNumAcc + q].data();
+    double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
+    double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
+    const double *eL = m.eintL.data(), *vL = m.spvolL.data();
+    const double* uL[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    for (const std::int64_t c : ownedCells_) {
+      const double mass = a[kMass][c];
+      if (!(mass > kTraceMass)) {  // absent (traces below kTraceMass kg are dropped)
+        ms[c] = 0;
+        for (int d = 0; d < 3; ++d) u[d][c] = uL[d][c];
+        e[c] = eL[c];
+        v[c] = vL[c];
+        continue;
+      }
+      const double inv = 1.0 / mass;
+      double ke = 0;
+      for (int d = 0; d < 3; ++d) {
+        double ud = a[kMomX + d][c] * inv;
+        if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
+        u[d][c] = ud;
+        ke += ud * ud;
+      }
+      const double eE = a[kE][c] * inv - 0.5 * ke;
+      const double eA = a[kEint][c] * inv;
+      if (eA > 0 && eE < 0.1 * eA) {
+        e[c] = eA;
+        ++fallbacks_;
+      } else {
+        e[c] = eE;
+      }
+      ms[c] = mass;
+      v[c] = a[kVol][c] * inv;
+    }
+  }
+  t_ += dt;
+  ++nsteps_;
+}
+
+}  // namespace mpmice::ice

@@ -1,0 +1,43 @@
+#include "ice/eos/jwl.h"
+
+#include <cmath>
+
+namespace mpmice::ice {
+
+void Jwl::cold(double rho, double* pc, double* dpc) const {
+  const double V = rho0_ / rho;
+  const double ea = std::exp(-R1_ * V), eb = std::exp(-R2_ * V);
+  const double ta = 1.0 - w_ / (R1_ * V), tb = 1.0 - w_ / (R2_ * V);
+  *pc = A_ * ta * ea + B_ * tb * eb;
+  // d/dV of A (1 - w/(R1 V)) exp(-R1 V) = A exp(-R1 V) (w/(R1 V^2) - R1 (1 - w/(R1 V)))
+  const double dpdV = A_ * ea * (w_ / (R1_ * V * V) - R1_ * ta) + B_ * eb * (w_ / (R2_ * V * V) - R2_ * tb);
+  *dpc = dpdV * (-V / rho);
+}
+
+void Jwl::eval(double rho, double e, double* p, double* dpdrho) const {
+  double pc, dpc;
+  cold(rho, &pc, &dpc);
+  *p = pc + w_ * rho * e;
+  *dpdrho = dpc + w_ * e;
+}
+
+double Jwl::internalEnergy(double rho, double p) const {
+  double pc, dpc;
+  cold(rho, &pc, &dpc);
+  return (p - pc) / (w_ * rho);
+}
+
+void Jwl::density(std::size_t n, const double* p, const double* e, double* rho, double* drhodp) const {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ei = e[i];
+    const double guess = ei > 0 ? std::max(p[i] / (w_ * ei), 1e-6 * rho0_) : rho0_;
+    const double r = invertPressure(p[i], std::min(guess, 2.0 * rho0_),
+                                    [&](double x, double* pp, double* dd) { eval(x, ei, pp, dd); });
+    double pp, dd;
+    eval(r, ei, &pp, &dd);
+    rho[i] = r;
+    drhodp[i] = dd > 0 ? 1.0 / dd : 0.0;
+  }
+}
+
+}  // namespace mpmice::ice

@@ -1,0 +1,96 @@
+// IceSolver phase 10: pointwise implicit momentum and heat exchange over all materials per cell,
+//   m_r u_r + dt V sum_s theta_r theta_s K_rs (u_r - u_s) = m_r u_r^L     (same shape for m cv T, H)
+// solved with pointwiseExchange(). Momentum is conserved exactly. The kinetic energy the drag
+// removes, D = sum_r m_r (|u_r^L|^2 - |u_r|^2) / 2 >= 0, becomes heat shared in proportion to the
+// heat capacities m_r cv_r (every material warms by D / sum_r m_r cv_r), so total energy is
+// conserved. Not given to the material that lost the speed: a trace of fluid in a solid cell
+// (mass ~1e-10 of the cell's) would take all of it, +|du|^2/2 per unit mass each step, and its
+// specific volume, hence du = dt v grad p, grows with its temperature: a runaway (the seed
+// cylinder's wall, docs/coupling.md). Uintah's exchange converts none of D to internal energy.
+// The increments of external materials are kept for the coupler.
+#include "ice/exchange/pointwise_exchange.h"
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+void IceSolver::exchange() {
+  const int nm = numMaterials();
+  const int dim = mesh_.dim();
+  const double V = mesh_.cellVolume();
+  const double dt = dt_;
+  for (MaterialState& m : st_.mat) {
+    m.dMom.fill(0.0);
+    m.dEnergy.fill(0.0);
+  }
+  if (nm < 2 || (!anyK_ && !anyH_)) return;
+  struct Ptr {
+    const double *m, *th, *vL;
+    double *uL[3], *eL, *dMom[3], *dE;
+    double cv;
+    bool external;
+  };
+  std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+  for (int r = 0; r < nm; ++r) {
+    MaterialState& m = st_.mat[r];
+    ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(),
+              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
+              {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(), m.eos->cv(), m.external};
+  }
+  const core::Box& sb = st_.press.box();
+  forEach(owned_, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k), o = owned_.index(i, j, k);
+    double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials], x[3 * kMaxMaterials], x0[3 * kMaxMaterials];
+    double mass[kMaxMaterials], th[kMaxMaterials];
+    for (int r = 0; r < nm; ++r) {
+      mass[r] = ptr[r].m[c];
+      th[r] = ptr[r].th[c];
+    }
+    if (anyK_) {
+      for (int r = 0; r < nm; ++r) {
+        s[r] = mass[r];
+        for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * V * K_[r * nm + q] * th[r] * th[q];
+        for (int d = 0; d < dim; ++d) {
+          x[d * nm + r] = x0[d * nm + r] = ptr[r].uL[d][c];
+        }
+      }
+      pointwiseExchange(nm, s, w, x, dim);
+      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
+      for (int r = 0; r < nm; ++r) {
+        for (int d = 0; d < dim; ++d) {
+          const double un = x[d * nm + r], uo = x0[d * nm + r];
+          D += 0.5 * mass[r] * (uo - un) * (uo + un);
+        }
+        C += mass[r] * ptr[r].cv;
+      }
+      for (int r = 0; r < nm; ++r) {
+        const Ptr& Q = ptr[r];
+        const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
+        for (int d = 0; d < dim; ++d) {
+          const double un = x[d * nm + r], uo = x0[d * nm + r];
+          Q.uL[d][c] = un;
+          if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
+        }
+        Q.eL[c] += de;
+        if (Q.external) Q.dE[o] = mass[r] * de;
+      }
+    }
+    if (anyH_) {
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        s[r] = mass[r] * ptr[r].cv;
+        for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * V * H_[r * nm + q] * th[r] * th[q];
+        x[r] = x0[r] = m.eos->temperature(1.0 / ptr[r].vL[c], ptr[r].eL[c]);
+      }
+      pointwiseExchange(nm, s, w, x, 1);
+      for (int r = 0; r < nm; ++r) {
+        const double de = ptr[r].cv * (x[r] - x0[r]);
+        ptr[r].eL[c] += de;
+        if (ptr[r].external) ptr[r].dE[o] += mass[r] * de;
+      }
+    }
+  });
+}
+
+}  // namespace mpmice::ice

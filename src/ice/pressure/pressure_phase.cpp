@@ -1,0 +1,148 @@
+// IceSolver phases 2 and 5: the equilibrium pressure of each cell and the explicit pressure
+// increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+void IceSolver::computeEquilibriumPressure() {
+  const int nm = numMaterials();
+  const double V = mesh_.cellVolume();
+  // External (solid) materials enter with the volume their particles occupy, m_e v_e (v_e as
+  // supplied), and stay compressible about it through their EOS. The node-to-cell average smears
+  // a solid's mass, so m_e v_e can exceed the cell near its surface; the solids' mass is then
+  // clipped to what fits (kMaxSolidFraction of the cell), so the smearing never turns into
+  // compression. In a cell the solids fill, the trace of fluid left makes the pressure the
+  // solid's own, continuously with the mixed cells around it.
+  std::vector<double> clip(anyExternal_ ? ownedCells_.size() : 0, 1.0);
+  if (anyExternal_) {
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      const std::int64_t c = ownedCells_[a];
+      double vext = 0;
+      for (const MaterialState& m : st_.mat)
+        if (m.external) vext += m.mass.data()[c] * m.spvol.data()[c];
+      if (vext > kMaxSolidFraction * V) clip[a] = kMaxSolidFraction * V / vext;
+    }
+  }
+  std::vector<const double*> rho, e;
+  std::vector<double*> rhoMicro;
+  for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile
+    double* th = m.theta.data();
+    const double* ms = m.mass.data();
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      const std::int64_t c = ownedCells_[a];
+      th[c] = ms[c] / V * (m.external ? clip[a] : 1.0);
+    }
+    rho.push_back(th);
+    e.push_back(m.eint.data());
+    rhoMicro.push_back(m.spvol.data());
+  }
+  const auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data());
+  const int anyFail = comm_.max(failures.empty() ? 0 : 1);
+  if (anyFail) {
+    std::ostringstream os;
+    os.precision(10);
+    if (failures.empty()) {
+      os << "ice: the equilibrium pressure failed on another rank at t = " << t_;
+    } else {
+      const EquilibriumFailure& f = failures.front();
+      const core::Box& sb = st_.press.box();
+      const std::int64_t nx = sb.length(0), ny = sb.length(1);
+      const int i = static_cast<int>(f.cell % nx) + sb.lo[0];
+      const int j = static_cast<int>((f.cell / nx) % ny) + sb.lo[1];
+      const int k = static_cast<int>(f.cell / (nx * ny)) + sb.lo[2];
+      os << "ice: the equilibrium pressure did not converge in cell (" << i << "," << j << "," << k << ") at t = "
+         << t_ << " after " << f.iterations << " iterations (" << failures.size()
+         << " cells failed on rank " << comm_.rank() << "); last p = " << f.p << ", bracket [" << f.lo << ", "
+         << f.hi << "], residual " << f.residual << "; materials:";
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        os << "\n  " << m.name << " (" << m.eos->name() << "): mass " << m.mass(i, j, k) << " kg, density "
+           << m.mass(i, j, k) / V << ", e " << m.eint(i, j, k) << " J/kg, velocity " << m.vel(i, j, k, 0);
+      }
+    }
+    throw std::runtime_error(os.str());
+  }
+  std::vector<double> ra, ea, c2;
+  for (MaterialState& m : st_.mat) {
+    double* th = m.theta.data();
+    double* sv = m.spvol.data();
+    double* ka = m.kappa.data();
+    const double* en = m.eint.data();
+    ra.resize(ownedCells_.size());
+    ea.resize(ownedCells_.size());
+    c2.resize(ownedCells_.size());
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      ra[a] = sv[ownedCells_[a]];
+      ea[a] = en[ownedCells_[a]];
+    }
+    m.eos->soundSpeed2(ra.size(), ra.data(), ea.data(), c2.data());
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      const std::int64_t c = ownedCells_[a];
+      const double rm = ra[a];
+      th[c] = nm == 1 ? 1.0 : th[c] / rm;
+      sv[c] = 1.0 / rm;
+      ka[c] = 1.0 / (rm * c2[a]);
+    }
+  }
+
+  double* pe = st_.pressEq.data();
+  const double* p = st_.press.data();
+  for (const std::int64_t c : ownedCells_) pe[c] = p[c];
+  fillMaterialGhosts(false);
+}
+
+void IceSolver::divergence() {
+  const int dim = mesh_.dim();
+  const int nm = numMaterials();
+  const core::Box& sb = st_.press.box();
+  const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  // Face volume fluxes U_f = sum_r theta_r,f u_f,r, theta from the upwind cell.
+  for (int d = 0; d < dim; ++d) {
+    const core::Box fb = owned_.faces(d);
+    const std::int64_t sd = strides[d];
+    double* U = st_.volFlux[d].data();
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
+      double f = 0;
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        const double u = m.velFace[d].data()[fi];
+        f += u * m.theta.data()[u > 0 ? cL : cR];
+      }
+      U[fi] = f;
+    });
+  }
+  forEach(owned_, [&](int i, int j, int k) {
+    double div = 0;
+    for (int d = 0; d < dim; ++d) {
+      const core::Field& U = st_.volFlux[d];
+      div += (U(i + (d == 0), j + (d == 1), k + (d == 2)) - U(i, j, k)) / mesh_.dx(d);
+    }
+    st_.divU(i, j, k) = div;
+  });
+}
+
+void IceSolver::explicitIncrement() {
+  divergence();
+  forEach(owned_, [&](int i, int j, int k) {
+    double kbar = 0;
+    for (const MaterialState& m : st_.mat) kbar += m.theta(i, j, k) * m.kappa(i, j, k);
+    const double dp = kbar > 0 ? -dt_ * st_.divU(i, j, k) / kbar : 0.0;
+    st_.dp(i, j, k) = dp;
+    st_.press(i, j, k) = st_.pressEq(i, j, k) + dp;
+  });
+}
+
+void IceSolver::computePressureIncrement() {
+  if (semiImplicit_) solveSemiImplicit();
+  else explicitIncrement();
+  fillGhosts({{&st_.press, FieldKind::Pressure}}, {-1});
+}
+
+}  // namespace mpmice::ice

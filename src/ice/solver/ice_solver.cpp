@@ -1,0 +1,283 @@
+#include "ice/solver/ice_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace mpmice::ice {
+
+using core::Field;
+using core::forEach;
+
+IceSolver::~IceSolver() = default;
+
+IceSolver::IceSolver(const core::Scene& scene, const core::Comm& comm)
+    : comm_(comm), mesh_(scene.mesh), decomp_(scene.mesh, comm.size(), scene.periodic()) {
+  initialize(scene);
+}
+
+void IceSolver::fillGhosts(const std::vector<std::pair<Field*, FieldKind>>& fields, const std::vector<int>& mats) {
+  std::vector<Field*> fs;
+  fs.reserve(fields.size());
+  for (const auto& f : fields) fs.push_back(f.first);
+  ghosts_->fill(fs);
+  for (std::size_t i = 0; i < fields.size(); ++i) bc_.apply(*fields[i].first, fields[i].second, mats[i]);
+}
+
+void IceSolver::fillMaterialGhosts(bool lagrangian) {
+  std::vector<std::pair<Field*, FieldKind>> fs;
+  std::vector<int> mats;
+  for (int r = 0; r < numMaterials(); ++r) {
+    MaterialState& m = st_.mat[r];
+    if (lagrangian) {
+      fs.insert(fs.end(), {{&m.velL, FieldKind::Velocity}, {&m.eintL, FieldKind::Energy},
+                           {&m.spvolL, FieldKind::SpecificVolume}});
+      mats.insert(mats.end(), {r, r, r});
+    } else {
+      fs.insert(fs.end(), {{&m.mass, FieldKind::Mass}, {&m.vel, FieldKind::Velocity}, {&m.eint, FieldKind::Energy},
+                           {&m.spvol, FieldKind::SpecificVolume}, {&m.theta, FieldKind::VolumeFraction}});
+      mats.insert(mats.end(), {r, r, r, r, r});
+    }
+  }
+  if (!lagrangian) {
+    fs.push_back({&st_.press, FieldKind::Pressure});
+    mats.push_back(-1);
+  }
+  fillGhosts(fs, mats);
+}
+
+double IceSolver::stableTimeStep() const {
+  const int dim = mesh_.dim();
+  const double V = mesh_.cellVolume();
+  double rate = 0;  // max over cells of sum_d (|u_d| + c) / dx_d
+  const int nm = numMaterials();
+  const core::Box& sb = st_.press.box();
+  forEach(owned_, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    double kbar = 0, rho = 0;
+    double umax[3] = {0, 0, 0};
+    for (int r = 0; r < nm; ++r) {
+      const MaterialState& m = st_.mat[r];
+      const double th = m.theta.data()[c];
+      kbar += th * m.kappa.data()[c];
+      rho += m.mass.data()[c] / V;
+      if (th > 1e-6)
+        for (int d = 0; d < dim; ++d) umax[d] = std::max(umax[d], std::abs(m.vel.data(d)[c]));
+    }
+    const double cs = kbar > 0 && rho > 0 ? std::sqrt(1.0 / (rho * kbar)) : 0.0;
+    double s = 0;
+    for (int d = 0; d < dim; ++d)
+      s += (semiImplicit_ ? std::max(umax[d], 0.1 * cs) : umax[d] + cs) / mesh_.dx(d);
+    rate = std::max(rate, s);
+  });
+  rate = comm_.max(rate);
+  double dt = rate > 0 ? cfl_ / rate : dtMax_;
+  // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
+  // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
+  // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > 1e-6).
+  // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
+  // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
+  // while m / (theta V) stays the cell's real mass.
+  if (anyViscous_) {
+    double inv2 = 0;
+    for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
+    double nu = 0;
+    for (const MaterialState& m : st_.mat) {
+      if (m.external || !(m.viscosity > 0)) continue;
+      const double* th = m.theta.data();
+      const double* mass = m.mass.data();
+      forEach(owned_, [&](int i, int j, int k) {
+        const std::int64_t c = sb.index(i, j, k);
+        if (th[c] > 1e-6 && mass[c] > 0) nu = std::max(nu, m.viscosity * th[c] * V / mass[c]);
+      });
+    }
+    nu = comm_.max(nu);
+    if (nu > 0) dt = std::min(dt, 1.0 / (2.0 * nu * inv2));
+  }
+  return dt;
+}
+
+void IceSolver::step() {
+  computeEquilibriumPressure();
+  double dt = std::min(stableTimeStep(), dtMax_);
+  if (dt < dtMin_)
+    throw std::runtime_error("ice: the stable time step " + std::to_string(dt) + " s at t = " + std::to_string(t_) +
+                             " s fell below time.dt_min = " + std::to_string(dtMin_) + " s");
+  if (tEnd_ > 0 && t_ + dt > tEnd_) dt = tEnd_ - t_;
+  beginStep(dt);
+  computeFaceVelocities();
+  computePressureIncrement();
+  computeFacePressure();
+  computeSourcesAndLagrangian();
+  exchange();
+  advectFluids();
+}
+
+void IceSolver::beginStep(double dt) {
+  if (!(dt > 0) || !std::isfinite(dt))
+    throw std::runtime_error("ice: time step " + std::to_string(dt) + " at t = " + std::to_string(t_) +
+                             " is not positive and finite");
+  dt_ = dt;
+}
+
+void IceSolver::setExternalMaterialState(int material, std::span<const double> mass, std::span<const double> velocity,
+                                         std::span<const double> temperature, std::span<const double> specificVolume) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (mass.size() != n || temperature.size() != n || specificVolume.size() != n || velocity.size() != 3 * n)
+    throw std::invalid_argument("ice: external state of '" + m.name + "' has the wrong size (owned cells " +
+                                std::to_string(n) + ")");
+  forEach(owned_, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
+    const double v = specificVolume[q];
+    m.mass(i, j, k) = mass[q];
+    for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = velocity[d * n + q];
+    m.spvol(i, j, k) = v;
+    m.eint(i, j, k) = m.eos->energyFromTemperature(1.0 / v, temperature[q]);
+  });
+}
+
+namespace {
+template <class State, class F>
+void forCheckpointFields(State& st, F&& f) {
+  for (auto& m : st.mat)
+    for (auto* x : {&m.mass, &m.vel, &m.eint, &m.spvol, &m.theta, &m.kappa}) f(*x);
+  f(st.press);
+  f(st.pressEq);
+}
+}  // namespace
+
+IceSolver::Checkpoint IceSolver::checkpoint() const {
+  Checkpoint c;
+  c.t = t_;
+  c.steps = nsteps_;
+  forCheckpointFields(st_, [&](const core::Field& x) { c.fields.push_back(x); });
+  return c;
+}
+
+void IceSolver::restore(const Checkpoint& c) {
+  std::size_t n = 0;
+  forCheckpointFields(st_, [&](core::Field& x) { x = c.fields.at(n++); });
+  t_ = c.t;
+  nsteps_ = c.steps;
+}
+
+void IceSolver::fitFluidsToExternalVolume() {
+  const double V = mesh_.cellVolume();
+  forEach(owned_, [&](int i, int j, int k) {
+    // Fluids at the scene's initial pressure of the cell (their micro density from the EOS).
+    const double p0 = initialPressure_(i, j, k);
+    double vext = 0, vfluid = 0;
+    for (const MaterialState& m : st_.mat) {
+      if (m.external) {
+        vext += m.mass(i, j, k) * m.spvol(i, j, k);
+        continue;
+      }
+      const double rho = m.eos->density(p0, m.eint(i, j, k));
+      if (rho > 0) vfluid += m.mass(i, j, k) / rho;
+    }
+    if (!(vfluid > 0)) return;
+    const double vfree = std::max(V - vext, (1.0 - kMaxSolidFraction) * V);
+    const double scale = vfree / vfluid;
+    for (MaterialState& m : st_.mat)
+      if (!m.external) m.mass(i, j, k) *= scale;
+  });
+  fillMaterialGhosts(false);
+}
+
+void IceSolver::setExternalLagrangianMomentum(int material, std::span<const double> momentum) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (momentum.size() != 3 * n) throw std::invalid_argument("ice: external momentum has the wrong size");
+  forEach(owned_, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
+    const double mass = m.mass(i, j, k);
+    for (int d = 0; d < 3; ++d) m.velL(i, j, k, d) = mass > 0 ? momentum[d * n + q] / mass : m.vel(i, j, k, d);
+  });
+}
+
+void IceSolver::setExternalLagrangianEnergy(int material, std::span<const double> energy) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (energy.size() != n) throw std::invalid_argument("ice: external energy has the wrong size");
+  forEach(owned_, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
+    const double mass = m.mass(i, j, k);
+    m.eintL(i, j, k) = mass > 0 ? energy[q] / mass : m.eint(i, j, k);
+  });
+}
+
+Field IceSolver::pressureForce(int material) const {
+  const MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  Field f(m.name + "/pressure_force", core::Centering::Cell, owned_, 3, 0);
+  const double V = mesh_.cellVolume();
+  forEach(owned_, [&](int i, int j, int k) {
+    const int c[3] = {i, j, k};
+    for (int d = 0; d < mesh_.dim(); ++d) {
+      int u[3] = {i, j, k};
+      u[d] = c[d] + 1;
+      const double g = (st_.pressFace[d](u[0], u[1], u[2]) - st_.pressFace[d](i, j, k)) / mesh_.dx(d);
+      f(i, j, k, d) = -V * m.theta(i, j, k) * g;
+    }
+  });
+  return f;
+}
+
+Totals IceSolver::totals() const {
+  Totals t;
+  for (const MaterialState& m : st_.mat) {
+    if (m.external) continue;
+    forEach(owned_, [&](int i, int j, int k) {
+      const double mass = m.mass(i, j, k);
+      double ke = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double u = m.vel(i, j, k, d);
+        t.momentum[d] += mass * u;
+        ke += u * u;
+      }
+      t.mass += mass;
+      t.energy += mass * (m.eint(i, j, k) + 0.5 * ke);
+    });
+  }
+  t.mass = comm_.sum(t.mass);
+  t.energy = comm_.sum(t.energy);
+  for (int d = 0; d < 3; ++d) t.momentum[d] = comm_.sum(t.momentum[d]);
+  return t;
+}
+
+double IceSolver::density(int m, int i, int j, int k) const {
+  return st_.mat[m].mass(i, j, k) / mesh_.cellVolume();
+}
+
+std::vector<Field> IceSolver::outputFields() const {
+  using core::Centering;
+  std::vector<Field> out;
+  auto make = [&](const std::string& n, int nc) { return Field(n, Centering::Cell, owned_, nc, 0); };
+  Field p = make("pressure", 1), it = make("pressure_iterations", 1);
+  forEach(owned_, [&](int i, int j, int k) {
+    p(i, j, k) = st_.press(i, j, k);
+    it(i, j, k) = st_.iters(i, j, k);
+  });
+  out.push_back(std::move(p));
+  out.push_back(std::move(it));
+  const double V = mesh_.cellVolume();
+  for (const MaterialState& m : st_.mat) {
+    Field rho = make(m.name + "_density", 1), vel = make(m.name + "_velocity", 3),
+          T = make(m.name + "_temperature", 1), th = make(m.name + "_volume_fraction", 1);
+    forEach(owned_, [&](int i, int j, int k) {
+      rho(i, j, k) = m.mass(i, j, k) / V;
+      for (int d = 0; d < 3; ++d) vel(i, j, k, d) = m.vel(i, j, k, d);
+      T(i, j, k) = m.eos->temperature(1.0 / m.spvol(i, j, k), m.eint(i, j, k));
+      th(i, j, k) = m.theta(i, j, k);
+    });
+    out.push_back(std::move(rho));
+    out.push_back(std::move(vel));
+    out.push_back(std::move(T));
+    out.push_back(std::move(th));
+  }
+  return out;
+}
+
+}  // namespace mpmice::ice

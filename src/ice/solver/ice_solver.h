@@ -1,0 +1,153 @@
+#pragma once
+/// @brief IceSolver: multi-material compressible ICE on the shared mesh, one phase per method step.
+///
+/// An uncoupled step() runs the phases of mpmice-method.md in order; the coupler calls them one by
+/// one in the monolithic-style schedule (ARCHITECTURE.md "The exchange, step by step"):
+///   setExternalMaterialState(...)  (each external material, before the pressure; step 1)
+///   computeEquilibriumPressure()   (step 2)        beginStep(dt)
+///   computeFaceVelocities()        (step 3, with the pointwise exchange at faces)
+///   computePressureIncrement()     (step 5, explicit or semi-implicit)
+///   computeFacePressure()          (step 6)  -> pressure(), pressureForce(m) for the solid
+///   computeSourcesAndLagrangian()  (steps 8, 9 and 11: sources, Lagrangian values, volumes)
+///   setExternalLagrangianMomentum/Energy(...)  (the solid's values after its internal forces)
+///   exchange()                     (step 10) -> exchangeMomentum(m), exchangeEnergy(m)
+///   advectFluids()                 (step 12; ends the step: t += dt)
+/// Per-cell arrays of the coupling calls cover this rank's owned cells, x fastest; vectors are
+/// component-major (3 blocks). External materials are never advected here.
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ice/boundary/ice_boundary.h"
+#include "core/parallel/comm.h"
+#include "core/parallel/decomposition.h"
+#include "core/parallel/ghost_exchange.h"
+#include "ice/pressure/equilibrium_pressure.h"
+#include "core/scene/scene.h"
+#include "ice/state/ice_state.h"
+
+namespace mpmice::ice {
+
+struct Totals {
+  double mass = 0, energy = 0;          // energy = internal + kinetic (fluids)
+  std::array<double, 3> momentum{0, 0, 0};
+};
+
+class IceSolver {
+ public:
+  /// Builds the state from the scene's fluid regions (solids become external materials).
+  /// Throws std::invalid_argument with the scene key for bad input.
+  IceSolver(const core::Scene& scene, const core::Comm& comm);
+  ~IceSolver();
+
+  // ---- uncoupled driving
+  /// One step of size min(stable, dt_max, t_end - t).
+  void step();
+  /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
+  /// and with viscous fluids also the explicit viscous bound 1 / (2 nu sum_d dx_d^-2), nu = mu / rho.
+  [[nodiscard]] double stableTimeStep() const;
+  [[nodiscard]] double time() const { return t_; }
+  [[nodiscard]] long steps() const { return nsteps_; }
+  [[nodiscard]] double dt() const { return dt_; }
+
+  // ---- phases (see the brief above)
+  void setExternalMaterialState(int material, std::span<const double> mass, std::span<const double> velocity,
+                                std::span<const double> temperature, std::span<const double> specificVolume);
+  /// Once, at the start of a coupled run, after every external material's first state: scales
+  /// each fluid's mass in every cell so that the fluids, at their initial micro state, fill
+  /// exactly the volume the solids leave free (V - sum m_e v_e; a trace where the solids fill
+  /// the cell). The solids' node-to-cell mass smears their surface over neighbouring cells; this
+  /// starts the fluids in pressure equilibrium with that smeared surface.
+  void fitFluidsToExternalVolume();
+  void computeEquilibriumPressure();
+  void beginStep(double dt);
+  void computeFaceVelocities();
+  void computePressureIncrement();
+  void computeFacePressure();
+  /// Pressure force -V theta_m grad(p_f) on material m per owned cell [N], 3 components.
+  [[nodiscard]] core::Field pressureForce(int material) const;
+  void computeSourcesAndLagrangian();
+  /// Solid's Lagrangian momentum [kg m/s] (3 x owned cells) and internal energy [J] per cell.
+  void setExternalLagrangianMomentum(int material, std::span<const double> momentum);
+  void setExternalLagrangianEnergy(int material, std::span<const double> energy);
+  void exchange();
+  /// Exchange increments of momentum [kg m/s] (3 comps) and internal energy [J] per owned cell.
+  [[nodiscard]] const core::Field& exchangeMomentum(int material) const { return st_.mat[material].dMom; }
+  [[nodiscard]] const core::Field& exchangeEnergy(int material) const { return st_.mat[material].dEnergy; }
+  void advectFluids();
+
+  // ---- checkpoints (implicit coupling repeats a step from the state before it)
+  struct Checkpoint {
+    std::vector<core::Field> fields;
+    double t = 0;
+    long steps = 0;
+  };
+  /// Copies of every field a step starts from (each material's mass, velocity, internal energy,
+  /// specific volume, volume fraction, compressibility; the pressures) and the clock. Local.
+  [[nodiscard]] Checkpoint checkpoint() const;
+  void restore(const Checkpoint& c);
+
+  // ---- access
+  [[nodiscard]] const core::Field& pressure() const { return st_.press; }
+  [[nodiscard]] const IceState& state() const { return st_; }
+  [[nodiscard]] IceState& state() { return st_; }
+  [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
+  [[nodiscard]] const core::Mesh& mesh() const { return mesh_; }
+  [[nodiscard]] const core::Decomposition& decomposition() const { return decomp_; }
+  [[nodiscard]] const core::Box& ownedBox() const { return owned_; }
+  [[nodiscard]] const core::Comm& comm() const { return comm_; }
+  /// Totals over every rank (collective).
+  [[nodiscard]] Totals totals() const;
+  /// Output fields over the owned cells: pressure, iterations, and per material density,
+  /// velocity, temperature, volume fraction (collective-free; built on demand).
+  [[nodiscard]] std::vector<core::Field> outputFields() const;
+  /// Material density m/V (per unit total volume) of material m in owned cell (i,j,k).
+  [[nodiscard]] double density(int m, int i, int j, int k) const;
+  /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
+  [[nodiscard]] long energyFallbacks() const { return fallbacks_; }
+
+ private:
+  void initialize(const core::Scene& scene);
+  void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
+  void fillMaterialGhosts(bool lagrangian);
+  void solveSemiImplicit();
+  /// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure.
+  static constexpr double kMaxSolidFraction = 1.0 - 1e-9;
+  void explicitIncrement();
+  /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
+  void divergence();
+
+  core::Comm comm_;
+  core::Mesh mesh_;
+  core::Decomposition decomp_;
+  core::Box owned_;
+  std::unique_ptr<core::GhostExchange> ghosts_;
+  IceBoundary bc_;
+  IceState st_;
+  std::vector<std::int64_t> ownedCells_;  // linear indices (stored box) of the owned cells
+  std::unique_ptr<EquilibriumPressure> equil_;
+  std::vector<double> K_, H_;             // exchange coefficients (n x n)
+  bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
+  bool secondOrder_ = true, semiImplicit_ = false, bicgstab_ = false;
+  int limiter_ = 1;
+  double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
+  int solverMaxIt_ = 1000;
+  core::RealVect gravity_{0, 0, 0};
+  bool anyGravity_ = false;
+  struct Source {
+    int material;
+    double power, start, end;
+    std::vector<std::int64_t> cells;
+  };
+  std::vector<Source> sources_;
+  double t_ = 0, dt_ = 0;
+  long nsteps_ = 0, fallbacks_ = 0;
+  std::array<InflowState, 6> inflow_{};
+  std::vector<std::vector<double>> acc_;  // advection accumulators (scratch)
+  core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
+  std::vector<std::array<core::Field, 3>> faceFlux_;  // advection face fluxes per material (scratch)
+  core::Field outScale_;                  // positivity scale of each donor's outflow, per material
+};
+
+}  // namespace mpmice::ice

@@ -1,0 +1,138 @@
+// IceSolver phases 8-9 and 11: momentum and energy sources at cell centres, the Lagrangian values
+// and the specific volume evolution.
+//   u_L = u - dt v_r grad(p_f) + dt g (+ viscous),      e_L = e - dt p v_r (kappa_r / kbar) div U
+//   v_L = v (1 + dt (kappa_r / kbar) div U),            U = sum_s theta_s u_f,s
+// Without external materials the fluids' total energy is made conservative: the mismatch between
+// the flux form -dt sum_faces A p_f U_f and the kinetic plus internal changes above (a truncation
+// error) is given to the materials in proportion to theta_r kappa_r, so closed boxes keep their
+// total energy to round-off. Energy sources add power * theta * V * dt to their material.
+#include <algorithm>
+#include <cmath>
+
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+void IceSolver::computeSourcesAndLagrangian() {
+  const int dim = mesh_.dim();
+  const int nm = numMaterials();
+  const double V = mesh_.cellVolume();
+  const double dt = dt_;
+  const bool fix = !anyExternal_;
+  const core::Box& sb = st_.press.box();
+  struct Ptr {
+    const double *th, *ka, *v, *m, *u[3], *e;
+    double *uL[3], *eL, *vL;
+  };
+  std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+  for (int r = 0; r < nm; ++r) {
+    MaterialState& m = st_.mat[r];
+    ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(),
+              {m.vel.data(0), m.vel.data(1), m.vel.data(2)}, m.eint.data(),
+              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data()};
+  }
+  const double* press = st_.press.data();
+  const double* divU = st_.divU.data();
+  forEach(owned_, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    double kbar = 0;
+    for (const Ptr& P : ptr) kbar += P.th[c] * P.ka[c];
+    const double p = press[c];
+    const double div = divU[c];
+    double gp[3] = {0, 0, 0};
+    double dEflux = 0;
+    for (int d = 0; d < dim; ++d) {
+      const core::Box& fb = st_.pressFace[d].box();
+      const std::int64_t fl = fb.index(i, j, k), fh = fb.index(i + (d == 0), j + (d == 1), k + (d == 2));
+      const double pfl = st_.pressFace[d].data()[fl], pfh = st_.pressFace[d].data()[fh];
+      gp[d] = (pfh - pfl) / mesh_.dx(d);
+      if (fix) {
+        const double* U = st_.volFlux[d].data();
+        dEflux -= dt * V * (pfh * U[fh] - pfl * U[fl]) / mesh_.dx(d);
+      }
+    }
+    double dKE = 0, dIE = 0;
+    for (int r = 0; r < nm; ++r) {
+      const Ptr& P = ptr[r];
+      const double v = P.v[c], mass = P.m[c];
+      const double f = kbar > 0 ? P.ka[c] / kbar : 0.0;
+      double ke0 = 0, ke1 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double u = P.u[d][c];
+        const double uL = d < dim ? u - dt * v * gp[d] : u;
+        P.uL[d][c] = uL;
+        ke0 += u * u;
+        ke1 += uL * uL;
+      }
+      // Relative volume change of the material; a trace of a compressible material in a stiff one
+      // takes most of the cell's volume change, so the linear update is capped at +-50% per step
+      // (the next equilibrium pressure resets the volumes; capped cells are counted).
+      double dvv = dt * f * div;
+      if (std::abs(dvv) > 0.5) {
+        dvv = dvv > 0 ? 0.5 : -0.5;
+        ++fallbacks_;
+      }
+      const double de = -p * v * dvv;
+      P.eL[c] = P.e[c] + de;
+      P.vL[c] = v * (1.0 + dvv);
+      dKE += 0.5 * mass * (ke1 - ke0);
+      dIE += mass * de;
+    }
+    if (fix && kbar > 0) {
+      const double D = dEflux - dKE - dIE;
+      for (const Ptr& P : ptr) {
+        const double e0 = P.eL[c];
+        const double e1 = e0 + (P.ka[c] / kbar) * P.v[c] * D / V;
+        if (e0 > 0 && e1 < 0.1 * e0) ++fallbacks_;  // would drain the internal energy: keep e0
+        else P.eL[c] = e1;
+      }
+    }
+    if (anyGravity_)
+      for (const Ptr& P : ptr)
+        for (int d = 0; d < dim; ++d) P.uL[d][c] += dt * gravity_[d];
+  });
+
+  if (anyViscous_ || anyConduction_) {
+    for (MaterialState& m : st_.mat) {
+      if (m.external || (m.viscosity <= 0 && m.conductivity <= 0)) continue;
+      forEach(owned_, [&](int i, int j, int k) {
+        const double tc = m.theta(i, j, k);
+        if (!(tc > 0)) return;
+        const double v = m.spvol(i, j, k);
+        const double Tc = m.eos->temperature(1.0 / v, m.eint(i, j, k));
+        double du[3] = {0, 0, 0}, dT = 0;
+        for (int d = 0; d < dim; ++d)
+          for (int sgn = -1; sgn <= 1; sgn += 2) {
+            int n[3] = {i, j, k};
+            n[d] += sgn;
+            const double tb = 0.5 * (tc + m.theta(n[0], n[1], n[2])) / tc / (mesh_.dx(d) * mesh_.dx(d));
+            if (m.viscosity > 0)
+              for (int q = 0; q < dim; ++q) du[q] += tb * (m.vel(n[0], n[1], n[2], q) - m.vel(i, j, k, q));
+            if (m.conductivity > 0) {
+              const double vn = m.spvol(n[0], n[1], n[2]);
+              dT += tb * (m.eos->temperature(1.0 / vn, m.eint(n[0], n[1], n[2])) - Tc);
+            }
+          }
+        for (int q = 0; q < dim; ++q) m.velL(i, j, k, q) += dt_ * m.viscosity * v * du[q];
+        m.eintL(i, j, k) += dt_ * m.conductivity * v * dT;
+      });
+    }
+  }
+
+  for (const Source& s : sources_) {
+    const double a = std::max(t_, s.start), b = std::min(t_ + dt, s.end);
+    if (!(b > a)) continue;
+    MaterialState& m = st_.mat[s.material];
+    const double* mass = m.mass.data();
+    const double* theta = m.theta.data();
+    double* e = m.eintL.data();
+    // power_density is per unit volume of the material: a cell the material shares (with a
+    // solid's surface, say) receives power * theta * V, so it heats at the rate of a full one.
+    for (const std::int64_t c : s.cells)
+      if (mass[c] > 0) e[c] += s.power * theta[c] * V * (b - a) / mass[c];
+  }
+}
+
+}  // namespace mpmice::ice

@@ -1,0 +1,37 @@
+#include "ice/state/ice_state.h"
+
+namespace mpmice::ice {
+
+void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim) {
+  using core::Centering;
+  using core::Field;
+  auto cell = [&](const std::string& n, int nc, double init = 0.0) {
+    return Field(n, Centering::Cell, stored, nc, kGhost, init);
+  };
+  for (auto& m : mat) {
+    m.mass = cell(m.name + "/mass", 1);
+    m.vel = cell(m.name + "/velocity", 3);
+    m.eint = cell(m.name + "/internal_energy", 1);
+    m.spvol = cell(m.name + "/specific_volume", 1, 1.0);
+    m.theta = cell(m.name + "/volume_fraction", 1);
+    m.kappa = cell(m.name + "/compressibility", 1);
+    m.velL = cell(m.name + "/velocity_L", 3);
+    m.eintL = cell(m.name + "/internal_energy_L", 1);
+    m.spvolL = cell(m.name + "/specific_volume_L", 1, 1.0);
+    for (int d = 0; d < 3; ++d)
+      m.velFace[d] = Field(m.name + "/face_velocity", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
+    m.dMom = Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0);
+    m.dEnergy = Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0);
+  }
+  press = cell("pressure", 1);
+  pressEq = cell("equilibrium_pressure", 1);
+  dp = cell("pressure_increment", 1);
+  iters = cell("pressure_iterations", 1);
+  divU = cell("velocity_divergence", 1);
+  for (int d = 0; d < 3; ++d) {
+    pressFace[d] = Field("face_pressure", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
+    volFlux[d] = Field("face_volume_flux", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
+  }
+}
+
+}  // namespace mpmice::ice

@@ -1,0 +1,54 @@
+#pragma once
+/// @brief The cell state of ICE: per-material SoA fields over this rank's cells plus ghosts.
+///
+/// Every material (fluid or external) has its mass per cell, velocity (3 components, those beyond
+/// the mesh dimension stay zero), specific internal energy, specific volume (1 / material
+/// density) and volume fraction, and the Lagrangian (post-source, post-exchange) velocity,
+/// energy and specific volume; face velocities live on the faces normal to each direction that
+/// bound this rank's cells (face index i = low face of cell i). The pressure fields are shared by
+/// all materials. Fields are stored over the owned box grown by kGhost layers.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ice/eos/eos.h"
+#include "core/field/field.h"
+
+namespace mpmice::ice {
+
+inline constexpr int kGhost = 2;
+
+/// Specific volume of a material at a face: mass-weighted mean of the two cells (so a material
+/// absent on one side takes the other side's value; one material: the harmonic mean of 1/rho).
+inline double faceSpecificVolume(double mL, double vL, double mR, double vR) {
+  const double m = mL + mR;
+  return m > 0 ? (mL * vL + mR * vR) / m : 2.0 * vL * vR / (vL + vR);
+}
+
+struct MaterialState {
+  std::string name;
+  bool external = false;              // state supplied by another participant, not advected here
+  std::unique_ptr<Eos> eos;
+  double viscosity = 0, conductivity = 0;
+  core::Field mass, vel, eint, spvol, theta, kappa;  // kappa = 1 / (rho^micro c^2)
+  core::Field velL, eintL, spvolL;                   // Lagrangian values
+  std::array<core::Field, 3> velFace;                // face velocity normal to each direction
+  core::Field dMom, dEnergy;          // exchange increments (external materials; owned cells)
+};
+
+struct IceState {
+  std::vector<MaterialState> mat;
+  core::Field press;      // cell pressure (after the increment)
+  core::Field pressEq;    // equilibrium pressure of this step
+  core::Field dp;         // pressure increment
+  core::Field iters;      // equilibrium iterations per cell (diagnostic)
+  core::Field divU;       // div(sum_r theta_r u_f,r) per cell
+  std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded)
+  std::array<core::Field, 3> pressFace;
+
+  /// Allocates every field over `stored` (cells) and the faces of `owned`.
+  void allocate(const core::Box& owned, const core::Box& stored, int dim);
+};
+
+}  // namespace mpmice::ice

@@ -1,0 +1,54 @@
+#pragma once
+/// @brief The background grid of one rank: node fields over the rank's nodes plus one ghost
+/// layer, and their exchange with neighbouring ranks.
+///
+/// Node fields (core::Field, three components for vectors whatever the dimension): mass,
+/// velocity (particle-to-grid velocity v_n), velocityL (Lagrangian velocity after the grid
+/// update), force (internal + body + loads), externalForce (the coupler's hook: e.g. ICE's
+/// pressure force, added in the grid update) and remap (MUSL's remapped velocity). The ghost
+/// layer reaches one node beyond the mesh at its faces, so B-splines need no special stencil; with
+/// `exteriorGhosts` (the B-spline shapes) that exterior layer belongs to the rank at the face and
+/// is summed across ranks like any owned node (GhostExchange's ownExterior).
+#include <vector>
+
+#include "core/field/field.h"
+#include "core/mesh/mesh.h"
+#include "core/parallel/comm.h"
+#include "core/parallel/decomposition.h"
+#include "core/parallel/ghost_exchange.h"
+
+namespace mpmice::mpm {
+
+/// Flat addressing of the node fields for the hot loops.
+struct GridGeom {
+  core::IntVect lo{0, 0, 0};
+  std::int64_t sy = 0, sz = 0;
+  double origin[3] = {0, 0, 0};
+  double invDx[3] = {1, 1, 1};
+  [[nodiscard]] std::int64_t index(int i, int j, int k) const {
+    return (i - lo[0]) + sy * (j - lo[1]) + sz * (k - lo[2]);
+  }
+};
+
+class Grid {
+ public:
+  static constexpr int kGhost = 1;
+  Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exteriorGhosts = false);
+
+  [[nodiscard]] const core::Box& box() const { return mass.box(); }
+  [[nodiscard]] const GridGeom& geom() const { return geom_; }
+  [[nodiscard]] std::int64_t numNodes() const { return mass.npts(); }
+  /// Adds ghost contributions into owners and copies totals back (no-op on one rank).
+  void sumAndFill(const std::vector<core::Field*>& fs) const;
+  /// Owners' values into ghosts (no-op on one rank).
+  void fill(const std::vector<core::Field*>& fs) const;
+
+  core::Field mass, velocity, velocityL, force, externalForce, remap;
+
+ private:
+  GridGeom geom_;
+  core::GhostExchange exchange_;
+  bool serial_;
+};
+
+}  // namespace mpmice::mpm

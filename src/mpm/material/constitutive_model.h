@@ -1,0 +1,50 @@
+#pragma once
+/// @brief The constitutive-model family: a tiny interface updating the stress of a whole range
+/// of particles of one material, and the one registry that builds a model from its scene name.
+///
+/// Virtual dispatch happens once per material per step, never per particle. Before the call the
+/// solver has set each particle's velocity gradient L (for this step), its new deformation
+/// gradient F = (I + dt L) F_old and its new volume V = V0 det F. A model updates the Cauchy
+/// stress (and its history: plastic strain, failure) and adds the step's stress work to `work`.
+///
+/// Scene names: linear_elastic, neo_hookean, j2_plasticity (parameters: see each header).
+/// An unknown name is an error listing the valid names.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/particles/particle_set.h"
+#include "core/scene/scene.h"
+
+namespace mpmice::mpm {
+
+class ConstitutiveModel {
+ public:
+  virtual ~ConstitutiveModel() = default;
+  [[nodiscard]] virtual const char* name() const = 0;
+  /// Stress update of particles [begin, end) over dt.
+  virtual void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const = 0;
+  /// Dilatational (P-) wave speed at density rho, for the time step.
+  [[nodiscard]] virtual double waveSpeed(double rho) const = 0;
+};
+
+/// Elastic constants read from a ModelSpec (bulk_modulus and shear_modulus, or youngs_modulus and
+/// poissons_ratio); `what` names the material in errors.
+struct ElasticConstants {
+  double K = 0, G = 0;
+  [[nodiscard]] double lambda() const { return K - 2.0 * G / 3.0; }
+  static ElasticConstants fromSpec(const core::ModelSpec& spec, const std::string& what);
+};
+
+/// A parameter of a ModelSpec; missing -> std::invalid_argument naming model and key.
+double modelParam(const core::ModelSpec& spec, const std::string& key, const std::string& what);
+double modelParam(const core::ModelSpec& spec, const std::string& key, double fallback);
+
+/// Valid scene names, in registry order.
+const std::vector<std::string>& constitutiveModelNames();
+/// Builds the model named spec.type; `what` names the material for errors.
+std::unique_ptr<ConstitutiveModel> createConstitutiveModel(const core::ModelSpec& spec,
+                                                           const std::string& what);
+
+}  // namespace mpmice::mpm

@@ -1,0 +1,33 @@
+#pragma once
+/// @brief J2 (von Mises) elastic-plastic solid: hypoelastic Jaumann trial stress, radial return,
+/// isotropic hardening (linear or piecewise linear), optional failure strain.
+///
+/// Yield stress sigma_y(eps_p) = yield_stress + hardening_modulus eps_p, or interpolated in the
+/// tables "plastic_strain"/"stress" when given (extrapolated with the last slope). Once the
+/// equivalent plastic strain reaches failure_strain (> 0), the particle fails: it keeps only a
+/// compressive pressure (no shear, no tension). Scene: `constitutive: {type: j2_plasticity,
+/// youngs_modulus, poissons_ratio, yield_stress, hardening_modulus, failure_strain}`.
+#include <vector>
+
+#include "mpm/material/constitutive_model.h"
+
+namespace mpmice::mpm {
+
+class J2Plasticity final : public ConstitutiveModel {
+ public:
+  J2Plasticity(const ElasticConstants& c, double yieldStress, double hardening,
+               double failureStrain, std::vector<double> tableStrain = {},
+               std::vector<double> tableStress = {});
+  [[nodiscard]] const char* name() const override { return "j2_plasticity"; }
+  void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override;
+  /// Yield stress and its slope at equivalent plastic strain e.
+  void yield(double e, double& sy, double& slope) const;
+
+ private:
+  ElasticConstants c_;
+  double sy0_, H_, failure_;
+  std::vector<double> te_, ts_;
+};
+
+}  // namespace mpmice::mpm

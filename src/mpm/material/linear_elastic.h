@@ -1,0 +1,24 @@
+#pragma once
+/// @brief Linear elasticity in rate form with the Jaumann (objective) stress rate.
+///
+///     sigma_new = sigma + dt (lambda tr(D) I + 2 G D + W sigma - sigma W),  D = sym L, W = skew L
+///
+/// Scene: `constitutive: {type: linear_elastic, youngs_modulus, poissons_ratio}` (or bulk_modulus
+/// and shear_modulus). Small strains; rotations handled objectively.
+#include "mpm/material/constitutive_model.h"
+
+namespace mpmice::mpm {
+
+class LinearElastic final : public ConstitutiveModel {
+ public:
+  explicit LinearElastic(const ElasticConstants& c) : c_(c) {}
+  [[nodiscard]] const char* name() const override { return "linear_elastic"; }
+  void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override;
+  [[nodiscard]] const ElasticConstants& constants() const { return c_; }
+
+ private:
+  ElasticConstants c_;
+};
+
+}  // namespace mpmice::mpm

@@ -1,0 +1,142 @@
+#include "mpm/particles/particle_set.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace mpmice::mpm {
+
+std::vector<ParticleSet::Col*> ParticleSet::columns() {
+  std::vector<Col*> c;
+  for (auto* a : {&x, &v, &halfSize, &fext, &x0, &fsurf})
+    for (auto& col : *a) c.push_back(&col);
+  for (auto* s : {&mass, &vol0, &vol, &temperature, &eqps, &failed, &work, &loadArea, &surface}) c.push_back(s);
+  for (auto& col : F) c.push_back(&col);
+  for (auto& col : L) c.push_back(&col);
+  for (auto& col : stress) c.push_back(&col);
+  return c;
+}
+
+std::vector<const ParticleSet::Col*> ParticleSet::columns() const {
+  auto c = const_cast<ParticleSet*>(this)->columns();
+  return {c.begin(), c.end()};
+}
+
+void ParticleSet::resize(std::size_t n) {
+  for (Col* c : columns()) c->resize(n, 0.0);
+  material.resize(n, 0);
+  load.resize(n, -1);
+  id.resize(n, 0);
+}
+
+void ParticleSet::reserve(std::size_t n) {
+  for (Col* c : columns()) c->reserve(n);
+  material.reserve(n);
+  load.reserve(n);
+  id.reserve(n);
+}
+
+std::size_t ParticleSet::addParticle(const std::array<double, 3>& pos,
+                                     const std::array<double, 3>& vel, double m, double volume,
+                                     const std::array<double, 3>& half, int mat, double temp,
+                                     std::int64_t gid) {
+  const std::size_t i = size();
+  resize(i + 1);
+  for (int d = 0; d < 3; ++d) {
+    x[d][i] = pos[d];
+    x0[d][i] = pos[d];
+    v[d][i] = vel[d];
+    halfSize[d][i] = half[d];
+  }
+  mass[i] = m;
+  vol0[i] = volume;
+  vol[i] = volume;
+  temperature[i] = temp;
+  F[0][i] = F[4][i] = F[8][i] = 1.0;
+  material[i] = mat;
+  id[i] = gid;
+  return i;
+}
+
+void ParticleSet::permute(const std::vector<std::uint32_t>& perm, std::vector<double>& scratch) {
+  const std::size_t n = size();
+  scratch.resize(n);
+  for (Col* c : columns()) {
+    for (std::size_t i = 0; i < n; ++i) scratch[i] = (*c)[perm[i]];
+    std::copy(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(n), c->begin());
+  }
+  auto permInt = [&](auto& col) {
+    auto tmp = col;  // integer columns: small, only on re-sorts
+    for (std::size_t i = 0; i < n; ++i) col[i] = tmp[perm[i]];
+  };
+  permInt(material);
+  permInt(load);
+  permInt(id);
+}
+
+void ParticleSet::compact(const std::vector<char>& keep) {
+  const std::size_t n = size();
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep[i]) continue;
+    if (i != j) {
+      for (Col* c : columns()) (*c)[j] = (*c)[i];
+      material[j] = material[i];
+      load[j] = load[i];
+      id[j] = id[i];
+    }
+    ++j;
+  }
+  resize(j);
+}
+
+std::size_t ParticleSet::packedSize() {
+  ParticleSet p;
+  return p.columns().size() + 3;
+}
+
+void ParticleSet::pack(std::size_t i, std::vector<double>& buf) const {
+  for (const Col* c : columns()) buf.push_back((*c)[i]);
+  buf.push_back(material[i]);
+  buf.push_back(load[i]);
+  buf.push_back(static_cast<double>(id[i]));  // exact below 2^53
+}
+
+std::size_t ParticleSet::unpack(const double* buf) {
+  const std::size_t i = size();
+  resize(i + 1);
+  std::size_t k = 0;
+  for (Col* c : columns()) (*c)[i] = buf[k++];
+  material[i] = static_cast<std::int32_t>(buf[k++]);
+  load[i] = static_cast<std::int32_t>(buf[k++]);
+  id[i] = static_cast<std::int64_t>(buf[k++]);
+  return k;
+}
+
+void ParticleSet::sortBy(const std::vector<std::uint64_t>& key, std::vector<std::uint32_t>& perm,
+                         std::vector<double>& scratch) {
+  const std::size_t n = size();
+  perm.resize(n);
+  std::iota(perm.begin(), perm.end(), 0u);
+  std::stable_sort(perm.begin(), perm.end(), [&](std::uint32_t a, std::uint32_t b) {
+    if (material[a] != material[b]) return material[a] < material[b];
+    if (key[a] != key[b]) return key[a] < key[b];
+    return id[a] < id[b];
+  });
+  permute(perm, scratch);
+}
+
+void ParticleSet::updateMaterialRanges(int nmat) {
+  ranges_.assign(static_cast<std::size_t>(nmat) + 1, 0);
+  std::size_t i = 0;
+  for (int m = 0; m < nmat; ++m) {
+    ranges_[m] = i;
+    while (i < size() && material[i] == m) ++i;
+  }
+  ranges_[nmat] = i;
+}
+
+bool ParticleSet::groupedByMaterial() const {
+  return std::is_sorted(material.begin(), material.end());
+}
+
+}  // namespace mpmice::mpm

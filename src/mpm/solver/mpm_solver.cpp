@@ -1,0 +1,693 @@
+#include "mpm/solver/mpm_solver.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "mpm/solver/kernels.h"
+
+namespace mpmice::mpm {
+
+using core::Centering;
+using core::Field;
+
+namespace {
+
+/// Calls f.template operator()<Shape, Dim>() for the run-time shape and dimension.
+template <class F>
+void dispatch(ShapeKind k, int dim, F&& f) {
+  withShape(k, [&](auto s) {
+    using S = decltype(s);
+    if (dim == 1)
+      f.template operator()<S, 1>();
+    else if (dim == 2)
+      f.template operator()<S, 2>();
+    else
+      f.template operator()<S, 3>();
+  });
+}
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+/// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
+double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
+  const int idx[3] = {i, j, k};
+  double w = 1.0;
+  for (int d = 0; d < mesh.dim(); ++d)
+    if (idx[d] > 0 && idx[d] < mesh.cells()[d]) w *= 0.5;
+  return w;
+}
+
+}  // namespace
+
+MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsFn contains)
+    : scene_(scene), comm_(comm) {
+  const core::Mesh& mesh = scene_.mesh;
+  // 1. Options, each checked with the scene key it came from.
+  if (!(scene_.time.cfl > 0 && scene_.time.cfl <= 1.0))
+    throw std::invalid_argument("time.cfl: the CFL number must lie in (0, 1] for explicit MPM, got " +
+                                num(scene_.time.cfl) + "; use e.g. 0.4");
+  if (!(scene_.mpm.flip >= 0 && scene_.mpm.flip <= 1))
+    throw std::invalid_argument("mpm.flip: must lie in [0, 1] (1 = FLIP, 0 = PIC), got " +
+                                num(scene_.mpm.flip));
+  if (!(scene_.mpm.damping >= 0))
+    throw std::invalid_argument("mpm.damping: must be >= 0 [1/s], got " + num(scene_.mpm.damping));
+  shape_ = parseShapeFunction(scene_.mpm.shape_function);
+  scheme_ = &parseUpdateScheme(scene_.mpm.update);
+  flip_ = scene_.mpm.flip;
+  damping_ = scene_.mpm.damping;
+  // 2. Decomposition, grid, boundary conditions.
+  decomp_ = core::Decomposition(mesh, comm_.size());
+  // B-splines (and GIMP within lp of a face) deposit on the node layer outside the mesh: on
+  // several ranks it is summed too (beyond mirror planes it is folded inside first).
+  const bool wide = shape_ != ShapeKind::Linear;
+  grid_ = std::make_unique<Grid>(decomp_, comm_, wide);
+  bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
+  // 3. Constitutive models of the solids.
+  models_.resize(scene_.materials.size());
+  cellStates_.resize(scene_.materials.size());
+  materialNodeMass_.resize(scene_.materials.size());
+  for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
+    const auto& mat = scene_.materials[m];
+    if (mat.kind != core::MaterialKind::Solid) continue;
+    if (!(mat.density > 0))
+      throw std::invalid_argument("materials." + mat.name + ".density: a solid needs a density > 0, got " +
+                                  num(mat.density) + "; give the reference density in kg/m^3");
+    models_[m] = createConstitutiveModel(mat.constitutive, "materials." + mat.name + ".constitutive");
+  }
+  // 4. Particles of the cells this rank owns, their loads, then sorted by (material, cell).
+  if (!contains)
+    contains = [](const core::ShapeSpec& s, const core::RealVect& x, int dim) {
+      return s.contains(x, dim);
+    };
+  generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains);
+  for (std::size_t l = 0; l < scene_.loads.size(); ++l) {
+    const auto& ld = scene_.loads[l];
+    if (ld.type != "pressure" && ld.type != "traction")
+      throw std::invalid_argument("loads[" + std::to_string(l) + "].type: unknown load '" + ld.type +
+                                  "'; valid choices: pressure, traction");
+    int mat = -1;
+    for (std::size_t m = 0; m < scene_.materials.size(); ++m)
+      if (scene_.materials[m].name == ld.material) mat = static_cast<int>(m);
+    if (mat < 0 || !models_[mat])
+      throw std::invalid_argument("loads[" + std::to_string(l) + "].material: '" + ld.material +
+                                  "' is not a solid material of the scene");
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      if (p_.material[i] == mat &&
+          contains(ld.shape, {p_.x[0][i], p_.x[1][i], p_.x[2][i]}, mesh.dim()))
+        p_.load[i] = static_cast<std::int32_t>(l);
+    if (ld.type == "pressure" && mesh.dim() == 2) assignArcAreas(static_cast<int>(l));
+  }
+  double minMass = 1e300;
+  for (double m : p_.mass) minMass = std::min(minMass, m);
+  massFloor_ = 1e-12 * comm_.min(minMass);
+  // Only the linear hat needs the cut-off: its gradient stays 1/dx where its weight vanishes. The C1
+  // shapes (GIMP, B-splines) have grad w ~ sqrt(w) there, so dt f / m times grad w stays bounded.
+  accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
+  migrateAndSort(true);
+}
+
+MpmSolver::~MpmSolver() = default;
+
+long long MpmSolver::globalParticleCount() const {
+  return comm_.sum(static_cast<long long>(p_.size()));
+}
+
+double MpmSolver::stableTimeStep() const {
+  const core::Mesh& mesh = scene_.mesh;
+  double dxMin = 1e300;
+  for (int d = 0; d < mesh.dim(); ++d) dxMin = std::min(dxMin, mesh.dx(d));
+  double cmax = 0;
+  for (std::size_t m = 0; m < models_.size(); ++m) {
+    if (!models_[m]) continue;
+    const auto [b, e] = p_.materialRange(static_cast<int>(m));
+    for (std::size_t i = b; i < e; ++i) {
+      double v2 = 0;
+      for (int d = 0; d < mesh.dim(); ++d) v2 += p_.v[d][i] * p_.v[d][i];
+      cmax = std::max(cmax, models_[m]->waveSpeed(p_.mass[i] / p_.vol[i]) + std::sqrt(v2));
+    }
+  }
+  cmax = comm_.max(cmax);
+  double dt = cmax > 0 ? scene_.time.cfl * dxMin / cmax : scene_.time.dt_max;
+  dt = std::min(dt, scene_.time.dt_max);
+  if (step_ == 0 && scene_.time.dt_initial > 0) dt = std::min(dt, scene_.time.dt_initial);
+  return dt;
+}
+
+double MpmSolver::advance(double until) {
+  double dt = stableTimeStep();
+  if (time_ + dt > until) dt = until - time_;
+  beginStep(dt);
+  particlesToGrid();
+  computeInternalForces();
+  updateGrid();
+  gridToParticles();
+  endStep();
+  return dt;
+}
+
+void MpmSolver::projectToGrid() {
+  grid_->mass.fill(0.0);
+  grid_->velocity.fill(0.0);
+  particlesToGrid();
+}
+
+void MpmSolver::assignArcAreas(int l) {
+  // 2D pressure on a curved particle layer: each particle carries the arc R dtheta between the
+  // mid-angles to its neighbours (sorted by angle about the load's centre over all ranks), R the
+  // surface radius (the load shape's inner radius, else the particles' mean radius). Exact total
+  // force whatever the lattice, where volume / spacing would alias by a few percent.
+  const auto& ld = scene_.loads[l];
+  std::vector<double> mine;
+  double rsum = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (p_.load[i] == l) {
+      const double dx = p_.x[0][i] - ld.center[0], dy = p_.x[1][i] - ld.center[1];
+      mine.push_back(std::atan2(dy, dx));
+      rsum += std::hypot(dx, dy);
+    }
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(comm_.size())), displ(counts.size());
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_.raw());
+  int total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    displ[r] = total;
+    total += counts[r];
+  }
+  if (total < 2) return;
+  std::vector<double> all(static_cast<std::size_t>(total));
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displ.data(), MPI_DOUBLE,
+                 comm_.raw());
+  std::sort(all.begin(), all.end());
+  double R = ld.shape.type == "annulus" ? ld.shape.inner_radius : comm_.sum(rsum) / total;
+  const double gapEnd = (all.back() - all.front()) / (total - 1);  // ends reach half a mean gap out
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (p_.load[i] != l) continue;
+    const double th = std::atan2(p_.x[1][i] - ld.center[1], p_.x[0][i] - ld.center[0]);
+    const auto it = std::lower_bound(all.begin(), all.end(), th);
+    const std::size_t k = static_cast<std::size_t>(it - all.begin());
+    const double lo = k == 0 ? th - 0.5 * gapEnd : 0.5 * (th + all[k - 1]);
+    const double hi = k + 1 == all.size() ? th + 0.5 * gapEnd : 0.5 * (th + all[k + 1]);
+    p_.loadArea[i] = R * (hi - lo);
+  }
+}
+
+void MpmSolver::beginStep(double dt) {
+  if (!(dt > 0)) throw std::invalid_argument("MpmSolver::beginStep: dt must be > 0, got " + num(dt));
+  dt_ = dt;
+  grid_->mass.fill(0.0);
+  grid_->velocity.fill(0.0);
+  grid_->force.fill(0.0);
+  grid_->externalForce.fill(0.0);
+  computeLoads();
+}
+
+void MpmSolver::computeLoads() {
+  if (scene_.loads.empty()) return;
+  const int dim = scene_.mesh.dim();
+  const double invDim = 1.0 / dim;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    for (int d = 0; d < 3; ++d) p_.fext[d][i] = 0.0;
+    const int l = p_.load[i];
+    if (l < 0) continue;
+    const auto& ld = scene_.loads[l];
+    double f = 1.0;
+    if (time_ < ld.start)
+      f = 0.0;
+    else if (ld.ramp > 0)
+      f = std::min(1.0, (time_ - ld.start) / ld.ramp);
+    const double area = p_.loadArea[i] > 0 ? p_.loadArea[i]
+                                           : p_.vol0[i] / std::pow(p_.vol0[i], invDim);  // one layer thick
+    if (ld.type == "traction") {
+      for (int d = 0; d < dim; ++d) p_.fext[d][i] = f * area * ld.traction[d];
+      continue;
+    }
+    double n[3] = {0, 0, 0}, len = 0;
+    for (int d = 0; d < dim; ++d) n[d] = p_.x[d][i] - ld.center[d];
+    if (dim == 3 && (ld.shape.type == "cylinder" || ld.shape.type == "annulus")) {
+      const auto& a = ld.shape.axis;
+      const double an = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      const double dot = (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) / (an * an);
+      for (int d = 0; d < 3; ++d) n[d] -= dot * a[d];
+    }
+    for (int d = 0; d < dim; ++d) len += n[d] * n[d];
+    len = std::sqrt(len);
+    if (len > 0)
+      for (int d = 0; d < dim; ++d) p_.fext[d][i] = f * area * ld.pressure * n[d] / len;
+  }
+}
+
+void MpmSolver::particlesToGrid() {
+  Grid& g = *grid_;
+  double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  double* mass = g.mass.data();
+  const GridGeom geom = g.geom();
+  dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
+    kernels::particlesToGrid<S, D>(p_, 0, p_.size(), geom, mass, mom);
+  });
+  bcs_.fold(g.mass, Parity::Scalar);
+  bcs_.fold(g.velocity, Parity::Vector);
+  g.sumAndFill({&g.mass, &g.velocity});
+  bcs_.mirror(g.mass, Parity::Scalar);
+  const std::int64_t n = g.numNodes();
+  const int dim = scene_.mesh.dim();
+  for (std::int64_t k = 0; k < n; ++k) {
+    const double inv = mass[k] > massFloor_ ? 1.0 / mass[k] : 0.0;
+    for (int d = 0; d < dim; ++d) mom[d][k] *= inv;
+  }
+  applyBC(g.velocity);
+}
+
+void MpmSolver::velocityGradientFrom(const Field& v) {
+  const double* vg[3] = {v.data(0), v.data(1), v.data(2)};
+  const GridGeom geom = grid_->geom();
+  dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
+    kernels::gridToParticles<S, D, false, false, true>(p_, 0, p_.size(), geom, vg, vg, vg, dt_, flip_);
+  });
+}
+
+void MpmSolver::updateDeformationAndStress() {
+  const std::size_t n = p_.size();
+  const double dt = dt_;
+  for (std::size_t i = 0; i < n; ++i) {
+    double Fn[9];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        double s = p_.F[3 * a + b][i];
+        for (int c = 0; c < 3; ++c) s += dt * p_.L[3 * a + c][i] * p_.F[3 * c + b][i];
+        Fn[3 * a + b] = s;
+      }
+    for (int k = 0; k < 9; ++k) p_.F[k][i] = Fn[k];
+    const double J = Fn[0] * (Fn[4] * Fn[8] - Fn[5] * Fn[7]) - Fn[1] * (Fn[3] * Fn[8] - Fn[5] * Fn[6]) +
+                     Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
+    p_.vol[i] = p_.vol0[i] * J;
+  }
+  for (std::size_t m = 0; m < models_.size(); ++m) {
+    if (!models_[m]) continue;
+    const auto [b, e] = p_.materialRange(static_cast<int>(m));
+    if (e > b) models_[m]->updateStress(p_, b, e, dt);
+  }
+}
+
+void MpmSolver::computeInternalForces() {
+  Grid& g = *grid_;
+  if (scheme_->stressFirst) {
+    velocityGradientFrom(g.velocity);
+    updateDeformationAndStress();
+  }
+  double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
+  const GridGeom geom = g.geom();
+  const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
+  const bool loads = !scene_.loads.empty() || surfaceForces_;
+  dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
+    kernels::internalForces<S, D>(p_, 0, p_.size(), geom, grav, loads, f);
+  });
+  bcs_.fold(g.force, Parity::Vector);
+  g.sumAndFill({&g.force});
+}
+
+void MpmSolver::updateGrid() {
+  Grid& g = *grid_;
+  if (comm_.size() > 1) g.fill({&g.externalForce});
+  const std::int64_t n = g.numNodes();
+  const int dim = scene_.mesh.dim();
+  const double dt = dt_, c = damping_;
+  const double* m = g.mass.data();
+  for (int d = 0; d < dim; ++d) {
+    const double* v = g.velocity.data(d);
+    const double* f = g.force.data(d);
+    const double* fe = g.externalForce.data(d);
+    double* vl = g.velocityL.data(d);
+    for (std::int64_t k = 0; k < n; ++k)
+      vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
+  }
+  applyBC(g.velocityL);
+}
+
+void MpmSolver::gridToParticles() {
+  Grid& g = *grid_;
+  const double* vL[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
+  const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  const GridGeom geom = g.geom();
+  const int dim = scene_.mesh.dim();
+  const std::size_t np = p_.size();
+  switch (scheme_->kind) {
+    case UpdateScheme::USF:
+      dispatch(shape_, dim, [&]<class S, int D>() {
+        kernels::gridToParticles<S, D, true, true, false>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+      });
+      break;
+    case UpdateScheme::USL:
+      dispatch(shape_, dim, [&]<class S, int D>() {
+        kernels::gridToParticles<S, D, true, true, true>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+      });
+      updateDeformationAndStress();
+      break;
+    case UpdateScheme::MUSL: {
+      dispatch(shape_, dim, [&]<class S, int D>() {
+        kernels::gridToParticles<S, D, true, false, false>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+      });
+      g.remap.fill(0.0);
+      double* mom[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+      dispatch(shape_, dim, [&]<class S, int D>() {
+        kernels::momentumToGrid<S, D>(p_, 0, np, geom, mom);
+      });
+      bcs_.fold(g.remap, Parity::Vector);
+      g.sumAndFill({&g.remap});
+      const double* m = g.mass.data();
+      for (int d = 0; d < dim; ++d)
+        for (std::int64_t k = 0; k < g.numNodes(); ++k) mom[d][k] = m[k] > massFloor_ ? mom[d][k] / m[k] : 0.0;
+      applyBC(g.remap);
+      const double* vr[3] = {mom[0], mom[1], mom[2]};
+      dispatch(shape_, dim, [&]<class S, int D>() {
+        kernels::gridToParticles<S, D, false, true, true>(p_, 0, np, geom, vL, vn, vr, dt_, flip_);
+      });
+      updateDeformationAndStress();
+      break;
+    }
+  }
+}
+
+void MpmSolver::endStep() {
+  time_ += dt_;
+  ++step_;
+  migrateAndSort(scene_.mpm.sort_particles && step_ % sortInterval_ == 0);
+}
+
+void MpmSolver::migrateAndSort(bool forceSort) {
+  const core::Mesh& mesh = scene_.mesh;
+  const int dim = mesh.dim();
+  const std::size_t n = p_.size();
+  sortKey_.resize(n);
+  // 1. Cell of every particle; one that left the mesh stops the run on every rank.
+  long long outside = -1;
+  double where[3] = {0, 0, 0};
+  std::vector<int> dest;  // only filled on several ranks
+  const core::Box all = mesh.cellBox();
+  const int me = comm_.rank();
+  bool moving = false;
+  if (comm_.size() > 1) dest.assign(n, me);
+  for (std::size_t i = 0; i < n; ++i) {
+    int c[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d) {
+      c[d] = static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d)));
+      if (c[d] < 0 || c[d] >= mesh.cells()[d] || !std::isfinite(p_.x[d][i])) {
+        if (outside < 0) {
+          outside = p_.id[i];
+          for (int e = 0; e < 3; ++e) where[e] = p_.x[e][i];
+        }
+        c[d] = 0;
+      }
+    }
+    sortKey_[i] = static_cast<std::uint64_t>(all.index(c[0], c[1], c[2]));
+    if (comm_.size() > 1) {
+      dest[i] = decomp_.ownerOfCell(c[0], c[1], c[2]);
+      if (dest[i] != me) moving = true;
+    }
+  }
+  if (comm_.max(outside >= 0 ? 1 : 0) > 0) {
+    std::ostringstream os;
+    if (outside >= 0)
+      os << "particle " << outside << " at (" << where[0] << ", " << where[1] << ", " << where[2]
+         << ") ";
+    else
+      os << "a particle on another rank ";
+    os << "is outside the mesh (" << mesh.describe() << ") at t = " << time_ << ", step " << step_
+       << ": enlarge the mesh, or make that face a wall (noslip_wall / symmetry)";
+    throw std::runtime_error(os.str());
+  }
+  // 2. Migration to the owning ranks.
+  bool received = false;
+  if (comm_.size() > 1 && comm_.max(moving ? 1 : 0) > 0) {
+    const int np = comm_.size();
+    const std::size_t ps = ParticleSet::packedSize();
+    std::vector<std::vector<double>> out(np);
+    std::vector<char> keep(n, 1);
+    for (std::size_t i = 0; i < n; ++i)
+      if (dest[i] != me) {
+        p_.pack(i, out[dest[i]]);
+        keep[i] = 0;
+      }
+    std::vector<int> scount(np), rcount(np), sdisp(np), rdisp(np);
+    std::vector<double> sbuf;
+    for (int r = 0; r < np; ++r) {
+      sdisp[r] = static_cast<int>(sbuf.size());
+      scount[r] = static_cast<int>(out[r].size());
+      sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+    }
+    MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm_.raw());
+    int total = 0;
+    for (int r = 0; r < np; ++r) {
+      rdisp[r] = total;
+      total += rcount[r];
+    }
+    std::vector<double> rbuf(static_cast<std::size_t>(total));
+    MPI_Alltoallv(sbuf.data(), scount.data(), sdisp.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
+                  rdisp.data(), MPI_DOUBLE, comm_.raw());
+    std::vector<std::uint64_t> keys;
+    for (std::size_t i = 0; i < n; ++i)
+      if (keep[i]) keys.push_back(sortKey_[i]);
+    p_.compact(keep);
+    for (std::size_t k = 0; k + ps <= rbuf.size(); k += ps) {
+      const std::size_t i = p_.size();
+      p_.unpack(rbuf.data() + k);
+      int c[3] = {0, 0, 0};
+      for (int d = 0; d < dim; ++d)
+        c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))),
+                          0, mesh.cells()[d] - 1);
+      keys.push_back(static_cast<std::uint64_t>(all.index(c[0], c[1], c[2])));
+      received = true;
+    }
+    sortKey_ = std::move(keys);
+  }
+  if (forceSort || received || !p_.groupedByMaterial()) p_.sortBy(sortKey_, perm_, scratch_);
+  p_.updateMaterialRanges(static_cast<int>(scene_.materials.size()));
+}
+
+const SolidCellState& MpmSolver::cellState(int material) {
+  if (material < 0 || material >= static_cast<int>(models_.size()) || !models_[material])
+    throw std::invalid_argument("MpmSolver::cellState: material " + std::to_string(material) +
+                                " is not a solid of the scene");
+  Grid& g = *grid_;
+  const core::Box cells = decomp_.cellBox(comm_.rank());
+  auto& cs = cellStates_[material];
+  if (!cs) {
+    cs = std::make_unique<SolidCellState>();
+    cs->mass = Field("mass", Centering::Cell, cells, 1, 0);
+    cs->velocity = Field("velocity", Centering::Cell, cells, 3, 0);
+    cs->temperature = Field("temperature", Centering::Cell, cells, 1, 0);
+    cs->volume = Field("volume", Centering::Cell, cells, 1, 0);
+    cs->specificVolume = Field("specific_volume", Centering::Cell, cells, 1, 0);
+    materialNodeMass_[material] = Field("mass", Centering::Node, g.box(), 1, Grid::kGhost);
+  }
+  if (cellMomentum_.npts() == 0) {  // scratch shared by all materials, allocated once
+    cellMomentum_ = Field("momentum", Centering::Node, g.box(), 3, Grid::kGhost);
+    cellVolumeTemperature_ = Field("volume_temperature", Centering::Node, g.box(), 2, Grid::kGhost);
+  }
+  // Node mass, momentum, volume and m T of this material.
+  Field& nm = materialNodeMass_[material];
+  Field& mom = cellMomentum_;
+  Field& vt = cellVolumeTemperature_;
+  const auto [b, e] = p_.materialRange(material);
+  nm.fill(0.0);
+  mom.fill(0.0);
+  vt.fill(0.0);
+  double* mp[3] = {mom.data(0), mom.data(1), mom.data(2)};
+  const GridGeom geom = g.geom();
+  const int dim = scene_.mesh.dim();
+  dispatch(shape_, dim, [&]<class S, int D>() {
+    kernels::particlesToGrid<S, D>(p_, b, e, geom, nm.data(), mp);
+    kernels::Stencil<S, D> st;
+    double* vol = vt.data(0);
+    double* mt = vt.data(1);
+    for (std::size_t i = b; i < e; ++i) {
+      st.compute(p_, i, geom);
+      const double V = p_.vol[i], MT = p_.mass[i] * p_.temperature[i];
+      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
+        vol[k] += V * w;
+        mt[k] += MT * w;
+      });
+    }
+  });
+  bcs_.fold(nm, Parity::Scalar);
+  bcs_.fold(mom, Parity::Vector);
+  bcs_.fold(vt, Parity::Scalar);
+  g.sumAndFill({&nm, &mom, &vt});
+  const core::Mesh& mesh = scene_.mesh;
+  const int nc = 1 << dim;
+  core::forEach(cells, [&](int i, int j, int k) {
+    double m = 0, p[3] = {0, 0, 0}, V = 0, MT = 0;
+    for (int c = 0; c < nc; ++c) {
+      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+      const double w = nodeShare(mesh, ni, nj, nk);
+      m += w * nm(ni, nj, nk);
+      for (int d = 0; d < 3; ++d) p[d] += w * mom(ni, nj, nk, d);
+      V += w * vt(ni, nj, nk, 0);
+      MT += w * vt(ni, nj, nk, 1);
+    }
+    cs->mass(i, j, k) = m;
+    for (int d = 0; d < 3; ++d) cs->velocity(i, j, k, d) = m > massFloor_ ? p[d] / m : 0.0;
+    cs->temperature(i, j, k) = m > massFloor_ ? MT / m : 0.0;
+    cs->volume(i, j, k) = V;
+    cs->specificVolume(i, j, k) = m > massFloor_ ? V / m : 0.0;
+  });
+  return *cs;
+}
+
+void MpmSolver::cellLagrangianMomentum(int material, Field& out) const {
+  const Field& nm = materialNodeMass_.at(material);
+  if (nm.npts() == 0)
+    throw std::logic_error("cellLagrangianMomentum: call cellState(material) first in this step");
+  const core::Mesh& mesh = scene_.mesh;
+  const int dim = mesh.dim(), nc = 1 << dim;
+  const Field& vL = grid_->velocityL;
+  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+    double p[3] = {0, 0, 0};
+    for (int c = 0; c < nc; ++c) {
+      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk);
+      for (int d = 0; d < 3; ++d) p[d] += w * vL(ni, nj, nk, d);
+    }
+    for (int d = 0; d < 3; ++d) out(i, j, k, d) = p[d];
+  });
+}
+
+void MpmSolver::applyCellVelocityIncrement(int material, const Field& dv) {
+  const Field& nm = materialNodeMass_.at(material);
+  if (nm.npts() == 0)
+    throw std::logic_error("applyCellVelocityIncrement: call cellState(material) first in this step");
+  Grid& g = *grid_;
+  const core::Mesh& mesh = scene_.mesh;
+  const int dim = mesh.dim(), nc = 1 << dim;
+  g.remap.fill(0.0);  // node momentum increments
+  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+    for (int c = 0; c < nc; ++c) {
+      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk);
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * dv(i, j, k, d);
+    }
+  });
+  g.sumAndFill({&g.remap});
+  const double* m = g.mass.data();
+  for (int d = 0; d < dim; ++d) {
+    double* vl = g.velocityL.data(d);
+    const double* dp = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k)
+      if (m[k] > massFloor_) vl[k] += dp[k] / m[k];
+  }
+  applyBC(g.velocityL);
+}
+
+void MpmSolver::addCellForce(int material, const Field& force) {
+  const Field& nm = materialNodeMass_.at(material);
+  if (nm.npts() == 0) throw std::logic_error("addCellForce: call cellState(material) first in this step");
+  const SolidCellState& cs = *cellStates_.at(material);
+  Grid& g = *grid_;
+  const core::Mesh& mesh = scene_.mesh;
+  const int dim = mesh.dim(), nc = 1 << dim;
+  g.remap.fill(0.0);  // node force contributions of this rank's cells
+  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+    const double mc = cs.mass(i, j, k);
+    if (!(mc > massFloor_)) return;
+    for (int c = 0; c < nc; ++c) {
+      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk) / mc;
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * force(i, j, k, d);
+    }
+  });
+  g.sumAndFill({&g.remap});
+  for (int d = 0; d < dim; ++d) {
+    double* fe = g.externalForce.data(d);
+    const double* df = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
+  }
+}
+
+void MpmSolver::addCellPressureStress(const Field& pcell, double pRef) {
+  Grid& g = *grid_;
+  const core::Mesh& mesh = scene_.mesh;
+  const core::Box owned = decomp_.cellBox(comm_.rank());
+  g.remap.fill(0.0);
+  double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const GridGeom geom = g.geom();
+  dispatch(shape_, mesh.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      int c[3] = {0, 0, 0};
+      for (int d = 0; d < D; ++d)
+        c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
+                          owned.hi[d]);
+      const double s = p_.vol[i] * (pcell(c[0], c[1], c[2]) - pRef);
+      if (s == 0.0) continue;
+      st.compute(p_, i, geom);
+      st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
+        f[0][k] -= s * gx;
+        if (D > 1) f[1][k] -= s * gy;
+        if (D > 2) f[2][k] -= s * gz;
+      });
+    }
+  });
+  bcs_.fold(g.remap, Parity::Vector);
+  g.sumAndFill({&g.remap});
+  for (int d = 0; d < mesh.dim(); ++d) {
+    double* fe = g.externalForce.data(d);
+    const double* df = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
+  }
+}
+
+void MpmSolver::addCellEnergy(int material, const Field& energy) {
+  const core::Mesh& mesh = scene_.mesh;
+  const core::Box owned = decomp_.cellBox(comm_.rank());
+  const double cv = scene_.materials.at(material).specific_heat;
+  const auto [b, e] = p_.materialRange(material);
+  std::vector<double>& cellMass = scratch_;
+  cellMass.assign(static_cast<std::size_t>(owned.numPts()), 0.0);
+  auto cellOf = [&](std::size_t i) {
+    int c[3] = {0, 0, 0};
+    for (int d = 0; d < mesh.dim(); ++d)
+      c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
+                        owned.hi[d]);
+    return std::array<int, 3>{c[0], c[1], c[2]};
+  };
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOf(i);
+    cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))] += p_.mass[i];
+  }
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOf(i);
+    const double m = cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))];
+    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
+  }
+}
+
+Energies MpmSolver::energies() const {
+  Energies e;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    e.kinetic += 0.5 * p_.mass[i] *
+                 (p_.v[0][i] * p_.v[0][i] + p_.v[1][i] * p_.v[1][i] + p_.v[2][i] * p_.v[2][i]);
+    e.strain += p_.work[i];
+  }
+  e.kinetic = comm_.sum(e.kinetic);
+  e.strain = comm_.sum(e.strain);
+  return e;
+}
+
+core::RealVect MpmSolver::centerOfMassVelocity() const {
+  std::vector<double> s(4, 0.0);
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    s[0] += p_.mass[i];
+    for (int d = 0; d < 3; ++d) s[d + 1] += p_.mass[i] * p_.v[d][i];
+  }
+  comm_.sumInPlace(s);
+  return {s[1] / s[0], s[2] / s[0], s[3] / s[0]};
+}
+
+}  // namespace mpmice::mpm

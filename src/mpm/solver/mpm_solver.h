@@ -1,0 +1,162 @@
+#pragma once
+/// @brief MpmSolver: explicit Material Point Method on the shared background mesh, one rank's
+/// share of a domain decomposition, as named phases the coupler calls one by one.
+///
+/// One step (the MPM side of the MPM-ICE schedule in docs/architecture.md):
+///   beginStep(dt)
+///   (1) particlesToGrid()          mass, momentum -> v_n (+ BCs);  cellState(m) for ICE
+///   (2) computeInternalForces()    (USF: stress update first) internal + body forces + loads;
+///       externalNodeForce()        hook: the coupler adds e.g. ICE's pressure force per node
+///   (3) updateGrid()               v_L = v_n + dt f / m (damping, BCs); cellLagrangianMomentum(m)
+///   (4) applyCellVelocityIncrement(m, dv)   hook: ICE's exchange increments back to the nodes
+///   (5) gridToParticles()          FLIP/PIC velocity, positions, (USL/MUSL) stress update
+///   endStep()                      migration between ranks, sorting, time advance
+/// An uncoupled step (advance()) is these phases in order with no external contributions.
+/// Collective calls (all ranks): constructor, stableTimeStep, every phase, energies.
+#include <memory>
+#include <vector>
+
+#include "mpm/grid/boundary_conditions.h"
+#include "mpm/grid/cell_state.h"
+#include "mpm/grid/grid.h"
+#include "mpm/material/constitutive_model.h"
+#include "mpm/particles/particle_generator.h"
+#include "mpm/particles/particle_set.h"
+#include "core/scene/scene.h"
+#include "mpm/scheme/update_scheme.h"
+#include "mpm/shape/shape_function.h"
+
+namespace mpmice::mpm {
+
+struct Energies {
+  double kinetic = 0;  // sum 1/2 m v^2
+  double strain = 0;   // stress work (stored elastic + dissipated plastic)
+  double total() const { return kinetic + strain; }
+};
+
+class MpmSolver {
+ public:
+  /// Builds the decomposition, grid, models and particles. Throws std::invalid_argument with a
+  /// message naming the scene key for bad input. `contains` defaults to ShapeSpec::contains.
+  MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsFn contains = {});
+  ~MpmSolver();
+
+  // ---- state -------------------------------------------------------------------------------
+  [[nodiscard]] const core::Scene& scene() const { return scene_; }
+  [[nodiscard]] const core::Decomposition& decomposition() const { return decomp_; }
+  [[nodiscard]] const core::Comm& comm() const { return comm_; }
+  [[nodiscard]] ParticleSet& particles() { return p_; }
+  [[nodiscard]] const ParticleSet& particles() const { return p_; }
+  [[nodiscard]] Grid& grid() { return *grid_; }
+  [[nodiscard]] const Grid& grid() const { return *grid_; }
+  [[nodiscard]] long long globalParticleCount() const;
+  [[nodiscard]] double time() const { return time_; }
+  [[nodiscard]] long stepCount() const { return step_; }
+  [[nodiscard]] ShapeKind shapeKind() const { return shape_; }
+  [[nodiscard]] const SchemeTraits& scheme() const { return *scheme_; }
+  [[nodiscard]] const ConstitutiveModel& model(int material) const { return *models_[material]; }
+
+  /// Small-mass cut-off of the grid update with linear hats: a node whose mass is below this
+  /// fraction of the smallest particle mass keeps v_L = v_n (no acceleration). Such nodes appear
+  /// when a particle just enters a cell (weight ~ 0) while the hat's gradient stays 1/dx: f/m there
+  /// is unbounded and, through the velocity gradient, blew up linear + USL at free surfaces
+  /// (docs/mpm.md). GIMP and B-splines need none (grad w ~ sqrt(w) as w -> 0: bounded).
+  static constexpr double kSmallMassFraction = 1e-2;
+
+  /// The CFL time step: cfl * dx_min / max(c + |v|) over all particles, capped by dt_max.
+  [[nodiscard]] double stableTimeStep() const;
+  /// One uncoupled step with dt = min(stableTimeStep, time left to `until`). Returns dt.
+  double advance(double until = 1e300);
+  /// Node mass and velocity v_n from the particles as they are now (what particlesToGrid() gives),
+  /// without stepping: e.g. for output of the initial state. Collective.
+  void projectToGrid();
+
+  // ---- phases (see the brief) ----------------------------------------------------------------
+  void beginStep(double dt);
+  void particlesToGrid();
+  /// Cell-centred state of solid material m (an extra particle-to-grid pass of that material).
+  const SolidCellState& cellState(int material);
+  void computeInternalForces();
+  /// Node force the coupler may add to before updateGrid() (zeroed by beginStep).
+  [[nodiscard]] core::Field& externalNodeForce() { return grid_->externalForce; }
+  void updateGrid();
+  /// Per-cell Lagrangian momentum of material m (after updateGrid; needs cellState(m) this step).
+  void cellLagrangianMomentum(int material, core::Field& out) const;
+  /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity.
+  void applyCellVelocityIncrement(int material, const core::Field& dv);
+  /// Adds per-cell forces on material m (owned cells, 3 components, e.g. ICE's pressure force)
+  /// to the external node force, shared among each cell's corner nodes in proportion to their
+  /// mass of m (the transpose of cellState's node-to-cell average; the total force is kept).
+  /// Call after cellState(m) and before updateGrid(). Collective.
+  void addCellForce(int material, const core::Field& force);
+  /// The mean-stress correction of MPM-ICE: the internal force of every particle uses
+  /// sigma + (p_cell - pRef) I, p_cell the pressure of the particle's cell (owned cells), so
+  /// the pressure force the fluid side applies does not count the solid's mean stress twice.
+  /// Adds -sum_p V_p (p_cell - pRef) grad w_ip to the external node force. Call after
+  /// computeInternalForces() and before updateGrid(). Collective.
+  void addCellPressureStress(const core::Field& cellPressure, double pRef);
+  /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to
+  /// its particles in each cell: one temperature rise dE / (m_cell cv) for all of them. Local.
+  void addCellEnergy(int material, const core::Field& energy);
+  void gridToParticles();
+  void endStep();
+
+  // ---- surface coupling (an interface-BC fluid such as OpenFOAM) ------------------------------
+  /// From now on the particle column fsurf (force per particle, held from step to step until the
+  /// coupler changes it) enters the internal force pass like a load.
+  void enableSurfaceForces() { surfaceForces_ = true; }
+
+  // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
+  struct Checkpoint {
+    ParticleSet particles;
+    double time = 0;
+    long step = 0;
+  };
+  /// The state a step starts from (particles and clock); restore() returns to it. Local.
+  [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_}; }
+  void restore(const Checkpoint& c) {
+    p_ = c.particles;
+    time_ = c.time;
+    step_ = c.step;
+  }
+
+  // ---- diagnostics ---------------------------------------------------------------------------
+  [[nodiscard]] Energies energies() const;
+  /// Centre-of-mass velocity (global).
+  [[nodiscard]] core::RealVect centerOfMassVelocity() const;
+
+ private:
+  void computeLoads();
+  void assignArcAreas(int load);
+  void updateDeformationAndStress();
+  void velocityGradientFrom(const core::Field& v);
+  void migrateAndSort(bool forceSort);
+  void applyBC(core::Field& v) const { bcs_.apply(v); }
+
+  core::Scene scene_;
+  core::Comm comm_;
+  core::Decomposition decomp_;
+  std::unique_ptr<Grid> grid_;
+  BoundaryConditions bcs_;
+  ParticleSet p_;
+  std::vector<std::unique_ptr<ConstitutiveModel>> models_;  // per scene material (null: fluid)
+  ShapeKind shape_;
+  const SchemeTraits* scheme_;
+  double flip_, damping_;
+  double dt_ = 0, time_ = 0;
+  long step_ = 0;
+  double massFloor_ = 0;
+  bool surfaceForces_ = false;
+  double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
+  int sortInterval_ = 20;
+  // Cell state per material (built on demand) and its node masses.
+  std::vector<std::unique_ptr<SolidCellState>> cellStates_;
+  std::vector<core::Field> materialNodeMass_;
+  core::Field cellMomentum_, cellVolumeTemperature_;  // cellState() scratch (node momentum; V, m T)
+  // Reused scratch (no allocations in the step).
+  std::vector<std::uint64_t> sortKey_;
+  std::vector<std::uint32_t> perm_;
+  std::vector<double> scratch_;
+};
+
+}  // namespace mpmice::mpm
