@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
     if (participant.coupled()) {
-      if (scene.coupling.fluid == "openfoam") {
+      if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {
           return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
         } catch (const std::invalid_argument& ex) {  // only this side knows (e.g. the fluid's case disagrees)

@@ -52,8 +52,8 @@ mpmice_bridge* mpmice_bridge_start(const char* scene_file) {
   if (!b) return nullptr;
   guarded(b, [&] {
     b->scene = core::loadScene(scene_file ? scene_file : "");
-    if (b->scene->coupling.fluid != "openfoam")
-      throw std::invalid_argument(std::string(scene_file) + ": coupling.fluid is '" + b->scene->coupling.fluid +
+    if (b->scene->coupling.fluid != mpmice::core::FluidSolver::OpenFoam)
+      throw std::invalid_argument(std::string(scene_file) + ": coupling.fluid is '" + std::string(mpmice::core::name(b->scene->coupling.fluid)) +
                                   "'; the OpenFOAM adapter needs coupling.fluid: openfoam");
     int initialized = 0;
     MPI_Initialized(&initialized);
@@ -78,8 +78,8 @@ int mpmice_bridge_info_get(const mpmice_bridge* b, mpmice_bridge_info* info) {
   if (!b || !info || !b->scene || !b->participant) return 1;
   const auto& i = b->scene->coupling.interface;
   info->coupled = b->participant->coupled() ? 1 : 0;
-  info->two_way = i.mode == "two_way" ? 1 : 0;
-  info->implicit = b->scene->coupling.schedule == "implicit_serial" ? 1 : 0;
+  info->two_way = i.mode == mpmice::core::CouplingMode::TwoWay ? 1 : 0;
+  info->implicit = b->scene->coupling.schedule == mpmice::core::Schedule::ImplicitSerial ? 1 : 0;
   info->fluid_density = i.fluid_density;
   std::strncpy(info->patch, i.patch.c_str(), sizeof(info->patch) - 1);
   info->patch[sizeof(info->patch) - 1] = '\0';

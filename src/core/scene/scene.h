@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/mesh/mesh.h"
+#include "core/scene/coupling_options.h"
 
 namespace mpmice::core {
 
@@ -209,24 +210,23 @@ struct InterfaceSpec {
   std::string patch;                        // the fluid's coupled boundary patch
   std::string openfoam_case;                // case directory (relative to the scene file)
   std::string openfoam_solver = "pimpleFoam";
-  std::string mapping = "rbf";              // nearest_neighbor | rbf
+  InterfaceMapping mapping = InterfaceMapping::Rbf;
   double rbf_support = 0;                   // rbf: 0 = thin-plate spline, > 0 = Wendland C2 radius [m]
-  std::string mode = "two_way";             // two_way | one_way (fluid to steady state, forces once)
+  CouplingMode mode = CouplingMode::TwoWay;  // one_way: fluid to steady state, forces once
   double fluid_density = 1.0;               // rho for kinematic-pressure solvers (pimpleFoam) [kg/m^3]
   SourceLoc where;
   bool operator==(const InterfaceSpec&) const = default;
 };
 
 struct CouplingSpec {
-  std::string schedule = "monolithic";  // monolithic | explicit_serial | explicit_parallel |
-                                        // implicit_serial | implicit_parallel
+  Schedule schedule = Schedule::Monolithic;
   int min_iterations = 1, max_iterations = 50;
   bool accept_unconverged = false;
   std::vector<ConvergenceSpec> convergence;
   AccelerationSpec acceleration;
   double timeout = 60.0;                // seconds any wait may take
   int mpm_ranks = 1, ice_ranks = 1;     // for `coupler run`
-  std::string fluid = "ice";            // ice | openfoam
+  FluidSolver fluid = FluidSolver::Ice;
   InterfaceSpec interface;              // fluid: openfoam (required there)
   bool operator==(const CouplingSpec&) const = default;
 };

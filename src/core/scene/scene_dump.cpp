@@ -259,7 +259,7 @@ void options(std::ostream& o, const Scene& s) {
         << ", heat: " << num(p.heat) << "}\n";
   }
   const CouplingSpec& c = s.coupling;
-  o << "coupling:\n  schedule: " << c.schedule << "\n  fluid: " << c.fluid << "\n  min_iterations: "
+  o << "coupling:\n  schedule: " << name(c.schedule) << "\n  fluid: " << name(c.fluid) << "\n  min_iterations: "
     << c.min_iterations << "\n  max_iterations: " << c.max_iterations << "\n  accept_unconverged: "
     << flag(c.accept_unconverged) << "\n  timeout: " << num(c.timeout) << "\n  ranks: {mpm: " << c.mpm_ranks
     << ", ice: " << c.ice_ranks << "}\n";
@@ -269,11 +269,11 @@ void options(std::ostream& o, const Scene& s) {
       o << "    - {field: " << quote(cv.field) << ", type: " << cv.type << ", limit: " << num(cv.limit)
         << ", strict: " << flag(cv.strict) << "}\n";
   }
-  if (c.fluid == "openfoam") {
+  if (c.fluid == FluidSolver::OpenFoam) {
     const InterfaceSpec& f = c.interface;
     o << "  interface:\n    solid: " << quote(f.solid) << "\n    patch: " << quote(f.patch) << "\n    case: "
-      << quote(f.openfoam_case) << "\n    solver: " << f.openfoam_solver << "\n    mapping: " << f.mapping
-      << "\n    rbf_support: " << num(f.rbf_support) << "\n    mode: " << f.mode << "\n    fluid_density: "
+      << quote(f.openfoam_case) << "\n    solver: " << f.openfoam_solver << "\n    mapping: " << name(f.mapping)
+      << "\n    rbf_support: " << num(f.rbf_support) << "\n    mode: " << name(f.mode) << "\n    fluid_density: "
       << num(f.fluid_density) << "\n";
   }
   const AccelerationSpec& a = c.acceleration;

@@ -530,15 +530,13 @@ class SchemaReader {
     m.allow({"schedule", "fluid", "min_iterations", "max_iterations", "accept_unconverged", "timeout", "ranks",
              "convergence", "acceleration", "interface"});
     CouplingSpec& c = s_.coupling;
-    c.schedule = m.choice("schedule", c.schedule,
-                          {"monolithic", "explicit_serial", "explicit_parallel", "implicit_serial", "implicit_parallel"},
-                          "coupling schedule");
-    c.fluid = m.choice("fluid", c.fluid, {"ice", "openfoam"}, "fluid solver");
-    if (c.fluid == "openfoam") {
+    c.schedule = m.option("schedule", c.schedule, kScheduleNames, "coupling schedule");
+    c.fluid = m.option("fluid", c.fluid, kFluidSolverNames, "fluid solver");
+    if (c.fluid == FluidSolver::OpenFoam) {
       c.interface = readInterface(m.required("interface"));
-      if (c.schedule == "monolithic" || c.schedule.find("parallel") != std::string::npos)
-      {
-        const std::string why = "schedule '" + c.schedule + "' does not apply to coupling.fluid 'openfoam', which "
+      if (c.schedule == Schedule::Monolithic || isParallel(c.schedule)) {
+        const std::string why = "schedule '" + std::string(name(c.schedule)) +
+                                "' does not apply to coupling.fluid 'openfoam', which "
                                 "couples through the interface one side after the other; valid schedules: "
                                 "explicit_serial, implicit_serial";
         if (const auto sv = m.get("schedule")) sv->fail(why);
@@ -596,9 +594,9 @@ class SchemaReader {
     i.openfoam_case = m.required("case").string();
     i.openfoam_solver = m.choice("solver", i.openfoam_solver, {"pimpleFoam", "pisoFoam", "icoFoam"},
                                  "OpenFOAM solver (incompressible, kinematic pressure)");
-    i.mapping = m.choice("mapping", i.mapping, {"nearest_neighbor", "rbf"}, "interface mapping");
+    i.mapping = m.option("mapping", i.mapping, kInterfaceMappingNames, "interface mapping");
     i.rbf_support = m.number("rbf_support", i.rbf_support, Range::nonNegative());  // [m], 0 = thin-plate spline
-    i.mode = m.choice("mode", i.mode, {"two_way", "one_way"}, "interface coupling mode");
+    i.mode = m.option("mode", i.mode, kCouplingModeNames, "interface coupling mode");
     i.fluid_density = m.number("fluid_density", i.fluid_density, Range::positive());  // [kg/m^3]
     return i;
   }

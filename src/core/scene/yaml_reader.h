@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/scene/coupling_options.h"
 #include "core/scene/scene.h"
 
 namespace mpmice::core::scene_detail {
@@ -99,6 +100,17 @@ class YamlMap {
   [[nodiscard]] std::string string(const std::string& key, const std::string& fallback) const;
   [[nodiscard]] std::string choice(const std::string& key, const std::string& fallback,
                                    const std::vector<std::string>& valid, const std::string& noun) const;
+  /// One of the names of `table` (coupling_options.h), as its enum value; else the error of choice().
+  template <class E, std::size_t N>
+  [[nodiscard]] E option(const std::string& key, E fallback, const std::array<std::pair<E, std::string_view>, N>& table,
+                         const std::string& noun) const {
+    std::vector<std::string> names;
+    for (const auto& [v, n] : table) names.emplace_back(n);
+    const std::string chosen = choice(key, std::string(nameIn(table, fallback)), names, noun);
+    for (const auto& [v, n] : table)
+      if (n == chosen) return v;
+    return fallback;
+  }
   [[nodiscard]] RealVect vector(const std::string& key, int dim, const RealVect& fallback,
                                 const Range& r = Range::any()) const;
 

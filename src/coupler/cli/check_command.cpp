@@ -18,7 +18,7 @@ std::string summarizeScene(const core::Scene& s) {
   std::ostringstream end;
   end << s.time.end;
   text += "; end time " + end.str() + " s";
-  text += "; coupling " + s.coupling.schedule + " with " + s.coupling.fluid;
+  text += "; coupling " + std::string(core::name(s.coupling.schedule)) + " with " + std::string(core::name(s.coupling.fluid));
   text += "; hash " + core::sceneHash(s);
   return text;
 }

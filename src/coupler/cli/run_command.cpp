@@ -43,7 +43,7 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
                          const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
   LaunchPlan plan;
-  if (scene.coupling.fluid == "openfoam") {
+  if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
     const std::string solver = scene.coupling.interface.openfoam_solver;
     const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
@@ -128,20 +128,20 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
     std::string fluidCase;
-    if (scene.coupling.fluid == "openfoam" && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
+    if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
     const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
     for (const auto& exe : plan.executables)
       if (!fs::exists(exe))
         throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");
-    out << "coupler: scene '" << scene.name << "', schedule " << scene.coupling.schedule << ", " << mpmRanks
-        << " MPM + " << (scene.coupling.fluid == "openfoam" ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
+    out << "coupler: scene '" << scene.name << "', schedule " << core::name(scene.coupling.schedule) << ", " << mpmRanks
+        << " MPM + " << (scene.coupling.fluid == core::FluidSolver::OpenFoam ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
                                                               : std::to_string(iceRanks) + " ICE ranks")
         << "\n"
         << "coupler: " << plan.commandLine() << "\n"
         << std::flush;
     if (dryRun) return 0;
     // Debian's OpenFOAM finds its etc/ through WM_PROJECT_DIR (exported to the launch by -x).
-    if (scene.coupling.fluid == "openfoam") setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
+    if (scene.coupling.fluid == core::FluidSolver::OpenFoam) setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
 
     FILE* pipe = popen((plan.commandLine() + " 2>&1").c_str(), "r");
     if (!pipe) throw std::runtime_error("coupler run: could not start " + plan.argv[0]);

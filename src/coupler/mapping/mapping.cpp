@@ -62,6 +62,14 @@ const std::vector<std::string>& mappingNames() {
   return names;
 }
 
+std::unique_ptr<Mapping> makeMapping(core::InterfaceMapping type, double rbfSupport) {
+  switch (type) {
+    case core::InterfaceMapping::NearestNeighbor: return std::make_unique<NearestNeighbor>();
+    case core::InterfaceMapping::Rbf: return std::make_unique<Rbf>(rbfSupport);
+  }
+  throw std::logic_error("makeMapping: no such mapping");
+}
+
 std::unique_ptr<Mapping> makeMapping(const std::string& type, double rbfSupport) {
   if (type == "nearest_neighbor") return std::make_unique<NearestNeighbor>();
   if (type == "rbf") return std::make_unique<Rbf>(rbfSupport);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "coupler/mapping/point_cloud.h"
+#include "core/scene/coupling_options.h"
 
 namespace mpmice::coupler {
 
@@ -58,6 +59,8 @@ class Mapping {
 /// Creates a mapping by its scene name; rbfSupport is used by "rbf" (0: thin-plate spline, > 0:
 /// Wendland C2 support radius). An unknown name throws std::invalid_argument listing the valid names.
 std::unique_ptr<Mapping> makeMapping(const std::string& type, double rbfSupport);
+/// The same, for the scene's parsed choice.
+std::unique_ptr<Mapping> makeMapping(core::InterfaceMapping type, double rbfSupport);
 const std::vector<std::string>& mappingNames();
 
 }  // namespace mpmice::coupler

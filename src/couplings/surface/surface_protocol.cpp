@@ -11,11 +11,11 @@ namespace mpmice::coupler {
 HandshakeSections surfaceHandshakeSections(const core::Scene& s) {
   const auto& i = s.coupling.interface;
   std::ostringstream iface;
-  iface << "solid " << i.solid << ", patch " << i.patch << ", mapping " << i.mapping << " (support " << i.rbf_support
-        << "), mode " << i.mode << ", fluid density " << i.fluid_density;
+  iface << "solid " << i.solid << ", patch " << i.patch << ", mapping " << core::name(i.mapping) << " (support " << i.rbf_support
+        << "), mode " << core::name(i.mode) << ", fluid density " << i.fluid_density;
   return {{"scene hash (mesh, materials, boundary)", core::sceneHash(s)},
           {"interface", iface.str()},
-          {"schedule", s.coupling.schedule},
+          {"schedule", std::string(core::name(s.coupling.schedule))},
           {"exchanged fields", "fluid -> solid: face forces | solid -> fluid: point displacements"}};
 }
 

@@ -177,7 +177,7 @@ TEST(SceneParse, DefaultsAreFilledIn) {
   EXPECT_EQ(s.mpm.update, "usl");
   EXPECT_EQ(s.ice.advection, "second_order");
   EXPECT_DOUBLE_EQ(s.ice.exchange_momentum, 1e15);
-  EXPECT_EQ(s.coupling.schedule, "monolithic");
+  EXPECT_EQ(s.coupling.schedule, core::Schedule::Monolithic);
   EXPECT_EQ(s.coupling.acceleration.type, "none");
   EXPECT_EQ(s.output.directory, "output");
   EXPECT_EQ(s.periodic(), (std::array<bool, 3>{false, false, false}));

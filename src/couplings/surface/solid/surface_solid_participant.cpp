@@ -8,7 +8,7 @@
 #include <unordered_map>
 
 #include "coupler/acceleration/acceleration.h"
-#include "coupler/convergence/convergence_measure.h"
+#include "coupler/iteration/implicit_iteration.h"
 #include "core/io/csv_writer.h"
 #include "coupler/mapping/mapping.h"
 #include "mpm/solver/mpm_output.h"
@@ -16,6 +16,7 @@
 #include "mpm/solver/probes.h"
 #include "couplings/surface/solid/surface_particles.h"
 #include "couplings/surface/surface_protocol.h"
+#include "core/time/time_loop.h"
 #include "core/util/progress.h"
 
 namespace mpmice::coupler {
@@ -74,8 +75,8 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   const core::Comm& comm = p.local();
   const bool root = comm.root();
   const int dim = scene.mesh.dim();
-  const bool oneWay = iface.mode == "one_way";
-  const bool implicit = scene.coupling.schedule == "implicit_serial";
+  const bool oneWay = iface.mode == core::CouplingMode::OneWay;
+  const bool implicit = scene.coupling.schedule == core::Schedule::ImplicitSerial;
 
   mpm::MpmSolver mpm(scene, comm);
   mpm.enableSurfaceForces();
@@ -97,8 +98,8 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
 
   core::Progress progress(log, comm, 0.0, oneWay ? 2 * scene.time.end : scene.time.end,
                           core::ProgressOptions{2.0, 0});
-  progress.start(scene.name + " (mpm_solver, surface-coupled to '" + p.peerName() + "', " + iface.mode + ", " +
-                     scene.coupling.schedule + ")",
+  progress.start(scene.name + " (mpm_solver, surface-coupled to '" + p.peerName() + "', " + std::string(core::name(iface.mode)) + ", " +
+                     std::string(core::name(scene.coupling.schedule)) + ")",
                  scene.mesh.describe(), comm.size());
   if (root) {
     log << "  interface: " << nSurface << " surface particles of '" << iface.solid << "'; patch '" << iface.patch
@@ -116,9 +117,8 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
         std::vector<std::string>{"window", "time", "dt", "iterations", "converged", "substeps", "force_x", "force_y",
                                  "force_z", "residual", "compute_s", "exchange_s"});
   }
-  const double interval = scene.output.interval > 0 ? scene.output.interval : 1e300;
-  double nextOut = interval;
-  if (output) {
+  core::OutputSchedule outputs(scene.output.interval, scene.time.end);
+  if (outputs.due(0.0) && output) {
     mpm.projectToGrid();
     output->write(mpm);
   }
@@ -128,29 +128,16 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   // Implicit: the iterate is the displacement of the patch points; measures and acceleration
   // work on data every solid rank holds in full (a communicator of one).
   const core::Comm self(MPI_COMM_SELF);
-  struct Measured {
-    std::string field;
-    bool strict;
-    std::unique_ptr<ConvergenceMeasure> m;
-  };
-  std::vector<Measured> measures;
-  std::unique_ptr<Acceleration> accel;
+  std::unique_ptr<ImplicitIteration> iteration;
   if (implicit) {
     auto conv = scene.coupling.convergence;
     if (conv.empty()) conv.push_back({"interface_displacement", "relative", 1e-4, true});
-    for (const auto& c : conv) {
+    for (const auto& c : conv)
       if (c.field != "interface_displacement" && c.field != "interface_force")
         throw std::invalid_argument("coupling.convergence: field '" + c.field +
                                     "' is not exchanged by a surface coupling; valid: interface_displacement, "
                                     "interface_force");
-      measures.push_back({c.field, c.strict, makeConvergenceMeasure(c.type, c.limit)});
-    }
-    AccelerationParams a;
-    a.type = scene.coupling.acceleration.type;
-    a.relaxation = scene.coupling.acceleration.relaxation;
-    a.reuse = scene.coupling.acceleration.reuse;
-    a.filter = scene.coupling.acceleration.filter;
-    accel = makeAcceleration(a, self);
+    iteration = std::make_unique<ImplicitIteration>(scene.coupling, conv, self);
   }
 
   std::vector<double> dispPoints(3 * static_cast<std::size_t>(setup.points), 0.0);  // what the fluid uses
@@ -167,7 +154,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   };
   auto advanceTo = [&](double tEnd) {
     long n = 0;
-    while (mpm.time() < tEnd * (1 - 1e-12) && mpm.time() < tEnd - 1e-15) {
+    while (!core::reached(mpm.time(), tEnd) && mpm.time() < tEnd - 1e-15) {
       mpm.advance(tEnd);
       ++n;
     }
@@ -223,8 +210,11 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
       lap(exchange);
     } else {
       const auto cp = mpm.checkpoint();
-      for (auto& m : measures) m.m->newStep();
+      iteration->beginStep();
       std::vector<double> prevForces;
+      std::ostringstream when;
+      when << "the window ending at t = " << head.tEnd;
+      StepReport report;
       for (int k = 1;; ++k) {
         if (k > 1) {
           (void)receiveVector(p, "window header (iteration " + std::to_string(k) + ")");
@@ -235,39 +225,28 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
         mapForces(forces);
         substeps = advanceTo(head.tEnd);
         const std::vector<double> dTilde = solidDisplacement();
-        bool allStrict = true, anyStrict = false, anySuffices = false;
-        for (auto& m : measures) {
-          bool ok;
-          if (m.field == "interface_displacement")
-            ok = m.m->measure(asVector(dispPoints), asVector(dTilde), self);
+        // Displacements: this iteration's input against its output; forces: the fluid's of the
+        // last iteration against this one's (none to compare with in the first).
+        std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> values;
+        for (const auto& f : iteration->measuredFields()) {
+          if (f == "interface_displacement")
+            values.emplace_back(asVector(dispPoints), asVector(dTilde));
           else
-            ok = k > 1 && m.m->measure(asVector(prevForces), asVector(forces), self);
-          residual = m.m->residual();
-          if (m.strict) {
-            anyStrict = true;
-            allStrict = allStrict && ok;
-          } else {
-            anySuffices = anySuffices || ok;
-          }
+            values.emplace_back(k > 1 ? asVector(prevForces) : Eigen::VectorXd(), asVector(forces));
         }
-        converged = k >= scene.coupling.min_iterations && ((anyStrict && allStrict) || anySuffices);
+        const bool done = iteration->judge(k, values, when.str(), report);
+        converged = report.converged;
+        residual = report.residuals.empty() ? 0.0 : report.residuals.back();
         iterations = k;
         lap(compute);
-        if (converged || k >= scene.coupling.max_iterations) {
-          if (!converged && !scene.coupling.accept_unconverged) {
-            std::ostringstream os;
-            os << "coupling: the window ending at t = " << head.tEnd << " did not converge in "
-               << scene.coupling.max_iterations << " iterations (coupling.max_iterations); residual " << residual
-               << ". Raise max_iterations, relax coupling.convergence, add acceleration, or set accept_unconverged";
-            throw std::runtime_error(os.str());
-          }
-          accel->iterationsConverged();
+        if (done) {
+          iteration->endStep();
           dispPoints = dTilde;
           reply(WindowAction::Advance, k, dispPoints);
           lap(exchange);
           break;
         }
-        const Eigen::VectorXd next = accel->performAcceleration(asVector(dispPoints), asVector(dTilde));
+        const Eigen::VectorXd next = iteration->accelerate(asVector(dispPoints), asVector(dTilde));
         dispPoints.assign(next.data(), next.data() + next.size());
         prevForces = forces;
         reply(WindowAction::Repeat, k, dispPoints);
@@ -282,10 +261,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
       csv->row({double(window), t, head.dt, double(iterations), converged ? 1.0 : 0.0, double(substeps), F[0], F[1],
                 F[2], residual, compute, exchange});
     if (probes && !oneWay) probes->record(mpm);
-    if (output && !oneWay && mpm.time() >= nextOut * (1 - 1e-12)) {
-      output->write(mpm);
-      while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
-    }
+    if (!oneWay && outputs.due(mpm.time()) && output) output->write(mpm);
     progress.step(static_cast<int>(window), t, head.dt, {{"iters", double(iterations)}, {"mpm_substeps", double(substeps)}});
     if (head.last) break;
   }
@@ -302,19 +278,16 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     }
     mapForces(lastForces);
     long n = 0;
-    while (mpm.time() < scene.time.end * (1 - 1e-12)) {
+    while (!core::reached(mpm.time(), scene.time.end)) {
       const double dt = mpm.advance(scene.time.end);
       ++n;
       if (probes) probes->record(mpm);
-      if (output && mpm.time() >= nextOut * (1 - 1e-12)) {
-        output->write(mpm);
-        while (nextOut <= mpm.time() * (1 + 1e-12)) nextOut += interval;
-      }
+      if (outputs.due(mpm.time()) && output) output->write(mpm);
       progress.step(static_cast<int>(window + n), t + mpm.time(), dt);
     }
     substepsTotal += n;
   }
-  if (output) output->write(mpm);
+  if (!outputs.written(mpm.time()) && output) output->write(mpm);  // the last step, always
   // Work per window: the MPM particle-steps it took (sub-cycling included).
   const long windowsAll = oneWay ? window + (substepsTotal > 0 ? 1 : 0) : window;
   progress.finish(static_cast<int>(windowsAll), oneWay ? t + mpm.time() : t,

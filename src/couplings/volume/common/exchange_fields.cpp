@@ -15,3 +15,32 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       exchangeEnergy(n + "/exchange_energy", core::Centering::Cell, owned, 1, 0) {}
 
 }  // namespace mpmice::coupler
+
+namespace mpmice::coupler {
+
+const char* describe(ExchangePoint p) {
+  switch (p) {
+    case ExchangePoint::SolidState: return "solid state";
+    case ExchangePoint::PressureForce: return "pressure force";
+    case ExchangePoint::LagrangianMomentum: return "Lagrangian momentum";
+    case ExchangePoint::ExchangeIncrements: return "exchange increments";
+  }
+  return "?";
+}
+
+std::vector<core::Field*> SolidExchangeFields::at(ExchangePoint p) {
+  switch (p) {
+    case ExchangePoint::SolidState: return {&mass, &velocity, &temperature, &specificVolume};
+    case ExchangePoint::PressureForce: return {&pressureForce, &pressure};
+    case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum};
+    case ExchangePoint::ExchangeIncrements: return {&exchangeMomentum, &exchangeEnergy};
+  }
+  return {};
+}
+
+std::vector<const core::Field*> SolidExchangeFields::at(ExchangePoint p) const {
+  const auto fields = const_cast<SolidExchangeFields*>(this)->at(p);
+  return {fields.begin(), fields.end()};
+}
+
+}  // namespace mpmice::coupler

@@ -1,12 +1,18 @@
 #pragma once
 /// @brief The cell-centred fields that cross between the solid and the fluid side in one MPM-ICE
-/// step (monolithic-style schedule, four exchange points), one set per solid material.
+/// step, one set per solid material, grouped by the exchange point that carries them.
 ///
-///   A  solid -> fluid  mass, velocity (3), temperature, specific volume      after particle-to-grid
-///   B  fluid -> solid  pressure force on the solid (3) [N], cell pressure [Pa]   after the face pressure
-///   C  solid -> fluid  Lagrangian momentum of the solid (3) [kg m/s]            after the grid update
-///   D  fluid -> solid  exchange increments of the solid: momentum (3) [kg m/s], energy [J]
+///   exchange point         direction        fields                                      after
+///   SolidState             solid -> fluid   mass, velocity (3), temperature,            particle-to-grid
+///                                           specific volume
+///   PressureForce          fluid -> solid   pressure force on the solid (3) [N],       the face pressure
+///                                           cell pressure [Pa]
+///   LagrangianMomentum     solid -> fluid   Lagrangian momentum of the solid (3)        the grid update
+///                                           [kg m/s]
+///   ExchangeIncrements     fluid -> solid   exchange increments of the solid:           the exchange
+///                                           momentum (3) [kg m/s], energy [J]
 /// Every field covers the owned cells of its side's rank, component-major, no ghosts.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,24 +20,32 @@
 
 namespace mpmice::coupler {
 
+enum class ExchangePoint { SolidState, PressureForce, LagrangianMomentum, ExchangeIncrements };
+inline constexpr std::array<ExchangePoint, 4> kExchangePoints{ExchangePoint::SolidState, ExchangePoint::PressureForce,
+                                                              ExchangePoint::LagrangianMomentum,
+                                                              ExchangePoint::ExchangeIncrements};
+
+/// Words for logs and timeout messages: "solid state", "pressure force", ...
+const char* describe(ExchangePoint p);
+/// True for the points the solid produces (SolidState, LagrangianMomentum).
+constexpr bool producedBySolid(ExchangePoint p) {
+  return p == ExchangePoint::SolidState || p == ExchangePoint::LagrangianMomentum;
+}
+/// The message tag of a point for the solid in `slot` (distinct per point and solid).
+constexpr int exchangeTag(ExchangePoint p, int slot) { return 101 + static_cast<int>(p) + 8 * slot; }
+
 struct SolidExchangeFields {
   int material = -1;           // scene index of the solid
   std::string name;
-  core::Field mass, velocity, temperature, specificVolume;  // A
-  core::Field pressureForce, pressure;                      // B
-  core::Field lagrangianMomentum;                           // C
-  core::Field exchangeMomentum, exchangeEnergy;             // D
+  core::Field mass, velocity, temperature, specificVolume;  // SolidState
+  core::Field pressureForce, pressure;                      // PressureForce
+  core::Field lagrangianMomentum;                           // LagrangianMomentum
+  core::Field exchangeMomentum, exchangeEnergy;             // ExchangeIncrements
 
   SolidExchangeFields(int m, const std::string& n, const core::Box& owned);
-  [[nodiscard]] std::vector<const core::Field*> a() const { return {&mass, &velocity, &temperature, &specificVolume}; }
-  [[nodiscard]] std::vector<core::Field*> a() { return {&mass, &velocity, &temperature, &specificVolume}; }
-  [[nodiscard]] std::vector<const core::Field*> b() const { return {&pressureForce, &pressure}; }
-  [[nodiscard]] std::vector<core::Field*> b() { return {&pressureForce, &pressure}; }
-  [[nodiscard]] std::vector<const core::Field*> d() const { return {&exchangeMomentum, &exchangeEnergy}; }
-  [[nodiscard]] std::vector<core::Field*> d() { return {&exchangeMomentum, &exchangeEnergy}; }
+  /// The fields one exchange point carries, in their order on the wire.
+  [[nodiscard]] std::vector<core::Field*> at(ExchangePoint p);
+  [[nodiscard]] std::vector<const core::Field*> at(ExchangePoint p) const;
 };
-
-/// Exchange tags of the four points (distinct per solid: tag + 8 * solid slot).
-enum ExchangeTag : int { kTagA = 101, kTagB = 102, kTagC = 103, kTagD = 104, kTagScalars = 105 };
 
 }  // namespace mpmice::coupler

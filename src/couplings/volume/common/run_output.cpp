@@ -23,14 +23,6 @@ RunOutput::RunOutput(const core::Scene& scene, const core::Comm& comm, const cor
                                  "momentum_z", "solid_energy", "fluid_energy", "total_energy"});
 }
 
-bool RunOutput::due(double time) {
-  const bool last = time >= scene_.time.end * (1 - 1e-12);
-  if (time < next_ * (1 - 1e-12) && !last) return false;
-  const double every = scene_.output.interval > 0 ? scene_.output.interval : scene_.time.end;
-  while (next_ <= time * (1 + 1e-12)) next_ += every;
-  return true;
-}
-
 void RunOutput::writeFields(long step, double time, const std::vector<const core::Field*>& fields,
                             const core::ParticleOutput* particles) {
   if (!enabled_) return;

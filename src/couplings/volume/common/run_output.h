@@ -1,5 +1,6 @@
 #pragma once
-/// @brief What a coupled run writes: HDF5/XDMF fields and particles at each output time, and a
+/// @brief What a coupled run writes: HDF5/XDMF fields and particles at each output time
+/// (core::OutputSchedule says when), and a
 /// CSV conservation monitor (total mass, momentum and energy of the solids and the fluids).
 #include <array>
 #include <memory>
@@ -29,8 +30,6 @@ class RunOutput {
   /// false). writeCsv: this writer also keeps the conservation CSV.
   RunOutput(const core::Scene& scene, const core::Comm& comm, const core::Decomposition& decomp,
             const std::string& suffix = "", bool writeCsv = true);
-  /// True when `time` has reached the next output time (and moves that on).
-  bool due(double time);
   void writeFields(long step, double time, const std::vector<const core::Field*>& fields,
                    const core::ParticleOutput* particles);
   void writeTotals(long step, double time, const SideTotals& solid, const SideTotals& fluid);
@@ -38,7 +37,6 @@ class RunOutput {
  private:
   const core::Scene& scene_;
   bool enabled_;
-  double next_ = 0;
   std::unique_ptr<core::OutputWriter> writer_;
   std::unique_ptr<core::CsvWriter> csv_;
 };

@@ -1,8 +1,8 @@
 #pragma once
 /// @brief The fluid side of an MPMD MPM-ICE launch: ice_solver coupled to mpm_solver.
 ///
-/// The mirror of runSolidParticipant: same handshake, same time steps, receives A and C, sends
-/// B and D. Writes its grid fields (HDF5/XDMF, file suffix "_fluid").
+/// The mirror of runSolidParticipant: same handshake, schedule and time loop with the fluid side
+/// only. Writes its grid fields (HDF5/XDMF, file suffix "_fluid").
 #include <ostream>
 
 #include "coupler/launch/participant.h"

@@ -1,32 +1,93 @@
 #include "couplings/volume/schedule/implicit_schedule.h"
 
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
 namespace mpmice::coupler {
 
-StepReport ImplicitSchedule::step(SolidSide& solid, FluidSide& fluid, double dt) {
-  auto& sf = solid.fields();
-  auto& ff = fluid.fields();
-  const auto cpSolid = solid.solver().checkpoint();
-  const auto cpFluid = fluid.solver().checkpoint();
-  auto pass = [&](bool serialOrder) {
-    if (serialOrder) {
-      solid.fullStep(dt);
-      transfer(sf, ff, 'A');
-      transfer(sf, ff, 'C');
-      fluid.fullStep(dt);
-    } else {
-      transfer(sf, ff, 'A');
-      transfer(sf, ff, 'C');
-      solid.fullStep(dt);
-      fluid.fullStep(dt);
+namespace {
+bool isFluidOutput(const std::string& f) { return f == "pressure_force" || f == "pressure" || f == "exchange_momentum"; }
+
+std::span<double> all(core::Field& f) { return {f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())}; }
+}  // namespace
+
+std::vector<core::ConvergenceSpec> volumeMeasures(const core::CouplingSpec& spec) {
+  const bool parallel = core::isParallel(spec.schedule);
+  std::vector<core::ConvergenceSpec> conv = spec.convergence;
+  if (conv.empty()) {
+    for (const std::string f : {"pressure_force", "exchange_momentum"}) conv.push_back({f, "relative", 1e-6, true});
+    if (parallel) conv.push_back({"solid_velocity", "relative", 1e-6, true});
+  }
+  for (const auto& c : conv)
+    if (!parallel && !isFluidOutput(c.field))
+      throw std::invalid_argument("coupling.convergence: field '" + c.field + "' is not iterated by implicit_serial; "
+                                  "valid: pressure_force, pressure, exchange_momentum (or use implicit_parallel)");
+  return conv;
+}
+
+ImplicitSchedule::ImplicitSchedule(const core::CouplingSpec& spec, const core::Comm& comm)
+    : kind_(spec.schedule), iteration_(spec, volumeMeasures(spec), comm) {}
+
+std::vector<DataView> ImplicitSchedule::iterate(SolidSide& solid) const {
+  std::vector<DataView> v;
+  for (auto& s : solid.fields()) {
+    if (core::isParallel(kind_)) {
+      v.push_back({"solid_mass", all(s.mass)});
+      v.push_back({"solid_velocity", all(s.velocity)});
+      v.push_back({"solid_temperature", all(s.temperature)});
+      v.push_back({"solid_specific_volume", all(s.specificVolume)});
+      v.push_back({"lagrangian_momentum", all(s.lagrangianMomentum)});
     }
-    transfer(ff, sf, 'B');
-    transfer(ff, sf, 'D');
+    v.push_back({"pressure_force", all(s.pressureForce)});
+    v.push_back({"pressure", all(s.pressure)});
+    v.push_back({"exchange_momentum", all(s.exchangeMomentum)});
+    v.push_back({"exchange_energy", all(s.exchangeEnergy)});
+  }
+  return v;
+}
+
+StepReport ImplicitSchedule::step(const Sides& s, Transport& tr, double dt) {
+  const bool serialOrder = !core::isParallel(kind_) || first_;
+  first_ = false;
+  std::optional<mpm::MpmSolver::Checkpoint> solidStart;
+  std::optional<ice::IceSolver::Checkpoint> fluidStart;
+  if (s.solid) solidStart = s.solid->solver().checkpoint();
+  if (s.fluid) fluidStart = s.fluid->solver().checkpoint();
+  // One pass: both sides step from the iterate; the fluid's output (and in parallel the
+  // solid's) is the next x~.
+  auto pass = [&] {
+    if (!serialOrder) {
+      exchange(s, tr, ExchangePoint::SolidState, "iteration");
+      exchange(s, tr, ExchangePoint::LagrangianMomentum, "iteration");
+    }
+    if (s.solid) s.solid->fullStep(dt);
+    if (serialOrder) {
+      exchange(s, tr, ExchangePoint::SolidState, "iteration");
+      exchange(s, tr, ExchangePoint::LagrangianMomentum, "iteration");
+    }
+    if (s.fluid) s.fluid->fullStep(dt);
+    exchange(s, tr, ExchangePoint::PressureForce, "iteration");
+    exchange(s, tr, ExchangePoint::ExchangeIncrements, "iteration");
   };
   auto restore = [&] {
-    solid.solver().restore(cpSolid);
-    fluid.solver().restore(cpFluid);
+    if (s.solid) s.solid->solver().restore(*solidStart);
+    if (s.fluid) s.fluid->solver().restore(*fluidStart);
   };
-  return iteration_.iterate(sf, solid.solver().time(), pass, restore, [](bool) {});
+  if (s.solid) {
+    std::ostringstream when;
+    when << "the step at t = " << s.solid->solver().time();
+    auto verdict = [&](bool done) { tr.trade({done ? 1.0 : 0.0}, "verdict of the iteration"); };
+    return iteration_.iterate(iterate(*s.solid), when.str(), pass, restore, verdict);
+  }
+  // A fluid side alone: the solid side iterates and decides.
+  StepReport report;
+  for (int k = 1;; ++k) {
+    pass();
+    report.iterations = k;
+    if (tr.trade({0.0}, "verdict of the iteration")[0] != 0.0) return report;
+    restore();
+  }
 }
 
 }  // namespace mpmice::coupler

@@ -1,10 +1,9 @@
 #pragma once
 /// @brief The solid side of an MPMD MPM-ICE launch: mpm_solver coupled to ice_solver.
 ///
-/// Runs the monolithic-style schedule with the fluid participant: per step the two sides agree on
-/// the time step, then fields A..D cross rank to rank (CellExchange) at the four exchange points.
-/// Writes its particles (HDF5/XDMF, file suffix "_solid"), the conservation CSV of both sides
-/// and the per-step coupling log (CSV: step, time, dt, compute and exchange seconds).
+/// After the handshake, the scene's schedule and the one time loop (run/volume_run.h) with the
+/// solid side only; the fields cross rank to rank (MpiTransport). Writes its particles
+/// (HDF5/XDMF, file suffix "_solid"), the conservation CSV of both sides and the coupling CSV.
 #include <ostream>
 
 #include "coupler/launch/participant.h"

@@ -1,0 +1,133 @@
+#include "couplings/volume/run/volume_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/io/csv_writer.h"
+#include "core/time/time_loop.h"
+#include "core/util/progress.h"
+#include "couplings/volume/common/run_output.h"
+#include "couplings/volume/schedule/coupling_schedule.h"
+#include "mpm/solver/probes.h"
+
+namespace mpmice::coupler {
+
+namespace {
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
+int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& transport, const core::Comm& comm,
+                      std::ostream& log, const std::string& label, const std::function<void(long)>& afterStep) {
+  const bool both = sides.solid && sides.fluid;
+  const auto schedule = makeSchedule(scene, comm);
+  const core::Decomposition& decomp =
+      sides.solid ? sides.solid->solver().decomposition() : sides.fluid->solver().decomposition();
+
+  core::Progress progress(log, comm, 0.0, scene.time.end, core::ProgressOptions{sides.solid ? 2.0 : 1e30, 0});
+  const long long particles = sides.solid ? sides.solid->solver().globalParticleCount() : 0;
+  if (sides.solid)
+    progress.start(scene.name + " (" + label + ", schedule " + std::string(core::name(scene.coupling.schedule)) +
+                       ", " + std::to_string(particles) + " particles)",
+                   scene.mesh.describe(), comm.size());
+  RunOutput out(scene, comm, decomp, both ? "" : sides.solid ? "_solid" : "_fluid", sides.solid != nullptr);
+  auto output = [&](long n, double t) {
+    std::vector<core::Field> fields;
+    std::vector<const core::Field*> ptrs;
+    if (sides.fluid) fields = sides.fluid->solver().outputFields();
+    for (const auto& f : fields) ptrs.push_back(&f);
+    core::ParticleOutput parts;
+    if (sides.solid) parts = sides.solid->particleOutput();
+    out.writeFields(n, t, ptrs, sides.solid ? &parts : nullptr);
+    SideTotals solid, fluid;
+    if (sides.solid) solid = sides.solid->totals();
+    if (sides.fluid) fluid = sides.fluid->totals();
+    if (!both) {  // each side trades its totals; the solid's writes the CSV of both
+      const SideTotals peer = SideTotals::unpack(transport.trade((sides.solid ? solid : fluid).pack(), "totals"));
+      (sides.solid ? fluid : solid) = peer;
+    }
+    out.writeTotals(n, t, solid, fluid);
+  };
+  std::unique_ptr<core::CsvWriter> steps;
+  if (scene.output.enabled && sides.solid) {
+    std::vector<std::string> cols{"step", "time", "dt", "iterations", "converged", "compute_s", "exchange_s"};
+    for (const auto& f : schedule->measuredFields()) cols.push_back("residual_" + f);
+    steps = std::make_unique<core::CsvWriter>(comm, scene.output.directory + "/" + scene.name + "_coupling.csv", cols);
+  }
+  // The probes' particles (output.probes): position and displacement at t = 0 and every step.
+  const auto probes = sides.solid ? mpm::ProbeRecorder::fromScene(sides.solid->solver()) : nullptr;
+
+  // 1. Start.
+  startCoupling(sides, transport);
+  double t = 0;
+  long n = 0, iterations = 0, unconverged = 0;
+  double computeTotal = 0;
+  const double exchangeStart = transport.seconds();
+  core::OutputSchedule outputs(scene.output.interval, scene.time.end);
+  if (outputs.due(t)) output(n, t);
+  if (probes) probes->record(sides.solid->solver());
+
+  // 2. Steps.
+  for (;;) {
+    if (core::reached(t, scene.time.end)) break;
+    const bool more = core::goesOn(t, n, scene.time.end, scene.time.max_steps);
+    if (!(transport.trade({more ? 1.0 : 0.0}, "go on")[0] != 0.0 && more)) break;
+    const double wall0 = now(), exchange0 = transport.seconds();
+    double mine = std::numeric_limits<double>::infinity();
+    if (sides.solid) mine = std::min(mine, sides.solid->stableTimeStep());
+    if (sides.fluid) mine = std::min(mine, sides.fluid->stableTimeStep());
+    const double theirs = transport.trade({mine}, "time step")[0];
+    const double dt = core::landOn(t, std::min({mine, theirs, scene.time.dt_max}), scene.time.end);
+    if (scene.time.dt_min > 0 && dt < scene.time.dt_min) {
+      std::ostringstream os;
+      os << label << ": time step " << dt << " s at t = " << t << " s (step " << n + 1
+         << ") fell below time.dt_min = " << scene.time.dt_min << " s";
+      throw std::runtime_error(os.str());
+    }
+    const StepReport r = schedule->step(sides, transport, dt);
+    t += dt;
+    ++n;
+    if (afterStep) afterStep(n);
+    const double exchange = transport.seconds() - exchange0, compute = now() - wall0 - exchange;
+    computeTotal += compute;
+    iterations += r.iterations;
+    if (!r.converged) {
+      ++unconverged;
+      if (comm.root() && sides.solid)
+        log << "coupling: step " << n << " accepted unconverged after " << r.iterations
+            << " iterations (coupling.accept_unconverged)\n";
+    }
+    if (steps) {
+      std::vector<double> row{double(n), t, dt, double(r.iterations), r.converged ? 1.0 : 0.0, compute, exchange};
+      row.insert(row.end(), r.residuals.begin(), r.residuals.end());
+      steps->row(row);
+    }
+    if (probes) probes->record(sides.solid->solver());
+    if (outputs.due(t)) output(n, t);
+    progress.step(static_cast<int>(n), t, dt, {{"iters", double(r.iterations)}});
+  }
+  // 3. The last step is always written.
+  if (!outputs.written(t) && outputs.due(t, true)) output(n, t);
+
+  // 4. Closing lines.
+  if (comm.root() && sides.solid) {
+    log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n
+        << " steps (" << double(iterations) / double(std::max(1L, n)) << " per step), " << unconverged
+        << " steps accepted unconverged\n";
+    log << "coupling: this process computed " << computeTotal << " s and spent "
+        << transport.seconds() - exchangeStart << " s in exchange (" << (both ? "in memory" : "rank to rank")
+        << ")\n";
+  }
+  if (both)
+    progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()));
+  else if (sides.solid)
+    progress.finish(static_cast<int>(n), t, double(particles), "particle-steps");
+  else
+    progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()), "cell-steps");
+  return 0;
+}
+
+}  // namespace mpmice::coupler
