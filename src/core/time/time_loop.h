@@ -34,6 +34,12 @@ class OutputSchedule {
   /// Called once per step with the clock after it (and once at t = 0): true when output is due,
   /// and moves the next output time past t. `last`: this is the run's last step.
   bool due(double t, bool last = false);
+  /// Where a solver that lands its steps on output times steps to next, from t with a stable
+  /// step `step`: the next output time; `end` when that is nearer, or when the interval is below
+  /// the step (output then follows every step and no step is shortened for it).
+  [[nodiscard]] double landingTarget(double t, double step) const {
+    return every_ < step || reached(t, next_) || next_ > end_ ? end_ : next_;
+  }
   /// True when the step at time t was the last one written (so the end needs no extra write).
   [[nodiscard]] bool written(double t) const { return written_ == t; }
 

@@ -1,0 +1,64 @@
+#include "ice/solver/standalone_run.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "core/io/csv_writer.h"
+#include "core/io/output_writer.h"
+#include "core/time/time_loop.h"
+#include "core/util/progress.h"
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log) {
+  if (!scene.solids().empty() && comm.root())
+    log << "note: the scene has solid materials; ice_solver alone treats them as absent external "
+           "materials (run the coupler for MPM-ICE)\n";
+  IceSolver solver(scene, comm);
+  if (comm.root()) {
+    log << "scene      " << scene.name << " (" << scene.file << ")\n"
+        << "mesh       " << scene.mesh.describe() << "\n"
+        << "ranks      " << comm.size() << "\n"
+        << "ice        advection " << scene.ice.advection << " (" << scene.ice.limiter << "), pressure "
+        << scene.ice.pressure_solver << "\n";
+    for (const auto& m : scene.materials)
+      log << "material   " << m.name << ": " << m.eos.type << ", cv " << m.specific_heat << "\n";
+  }
+  const std::string dir = scene.output.directory;
+  std::unique_ptr<core::OutputWriter> writer;
+  std::unique_ptr<core::CsvWriter> csv;
+  if (scene.output.enabled) {
+    writer = std::make_unique<core::OutputWriter>(comm, solver.decomposition(), dir, scene.name);
+    csv = std::make_unique<core::CsvWriter>(comm, dir + "/" + scene.name + "_totals.csv",
+                                            std::vector<std::string>{"step", "time", "mass", "momentum_x",
+                                                                     "momentum_y", "momentum_z", "energy"});
+  }
+  auto output = [&] {
+    const Totals t = solver.totals();  // collective
+    if (!writer) return;
+    const std::vector<core::Field> fields = solver.outputFields();
+    std::vector<const core::Field*> ptrs;
+    for (const auto& f : fields) ptrs.push_back(&f);
+    writer->writeStep(static_cast<int>(solver.steps()), solver.time(), ptrs);
+    csv->row({double(solver.steps()), solver.time(), t.mass, t.momentum[0], t.momentum[1], t.momentum[2], t.energy});
+  };
+  core::Progress progress(log, comm, 0.0, scene.time.end);
+  progress.start(scene.name, scene.mesh.describe(), comm.size());
+  core::OutputSchedule outputs(scene.output.interval, scene.time.end);
+  if (outputs.due(0.0)) output();
+  while (core::goesOn(solver.time(), solver.steps(), scene.time.end, scene.time.max_steps)) {
+    solver.step();
+    double maxIt = 0;
+    const auto& it = solver.state().iters;
+    core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });
+    progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), {{"p_iters", comm.max(maxIt)}});
+    if (outputs.due(solver.time())) output();
+  }
+  if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) output();  // the last step
+  progress.finish(static_cast<int>(solver.steps()), solver.time(), double(scene.mesh.numCells()), "cell-steps");
+  if (comm.root() && writer) log << "output     " << writer->xdmfPath() << "\n";
+  return 0;
+}
+
+}  // namespace mpmice::ice

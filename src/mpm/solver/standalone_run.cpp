@@ -1,0 +1,61 @@
+#include "mpm/solver/standalone_run.h"
+
+#include <memory>
+
+#include "core/io/csv_writer.h"
+#include "core/time/time_loop.h"
+#include "core/util/progress.h"
+#include "mpm/solver/mpm_output.h"
+#include "mpm/solver/mpm_solver.h"
+#include "mpm/solver/probes.h"
+
+namespace mpmice::mpm {
+
+int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log) {
+  MpmSolver solver(scene, comm);
+  const long long np = solver.globalParticleCount();
+  core::Progress progress(log, comm, 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
+  progress.start(scene.name, scene.mesh.describe(), comm.size());
+  if (comm.root())
+    log << "  particles: " << np << "\n  shape function: " << scene.mpm.shape_function << ", update: "
+        << scene.mpm.update << ", flip: " << scene.mpm.flip << ", damping: " << scene.mpm.damping
+        << " 1/s, cfl: " << scene.time.cfl << "\n"
+        << std::flush;
+  // Output (collective) and the energies CSV (flushed row by row).
+  std::unique_ptr<MpmOutput> output;
+  std::unique_ptr<core::CsvWriter> csv;
+  if (scene.output.enabled) {
+    output = std::make_unique<MpmOutput>(solver);
+    const std::string path = scene.output.directory + "/" + scene.name + "_energies.csv";
+    csv = std::make_unique<core::CsvWriter>(comm, path,
+                                            std::vector<std::string>{"step", "time", "kinetic", "strain", "total"});
+    if (comm.root()) log << "  output: " << output->xdmfPath() << " (energies: " << path << ")\n" << std::flush;
+  }
+  auto write = [&] {
+    const auto e = solver.energies();  // collective
+    if (csv) csv->row({double(solver.stepCount()), solver.time(), e.kinetic, e.strain, e.total()});
+    if (output) output->write(solver);
+  };
+  core::OutputSchedule outputs(scene.output.interval, scene.time.end);
+  if (outputs.due(0.0) && output) {
+    solver.projectToGrid();  // node fields of the initial state
+    write();
+  }
+  const auto probes = ProbeRecorder::fromScene(solver);  // collective; null without probes
+  if (probes) probes->record(solver);
+  while (core::goesOn(solver.time(), solver.stepCount(), scene.time.end, scene.time.max_steps)) {
+    const double dt = solver.advance(outputs.landingTarget(solver.time(), solver.stableTimeStep()));
+    if (probes) probes->record(solver);
+    if (outputs.due(solver.time())) write();
+    progress.step(static_cast<int>(solver.stepCount()), solver.time(), dt, {},
+                  core::reached(solver.time(), scene.time.end));
+  }
+  if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // stopped by time.max_steps
+  const auto e = solver.energies();
+  progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");
+  if (comm.root())
+    log << "  energy: kinetic " << e.kinetic << ", strain " << e.strain << ", total " << e.total() << "\n" << std::flush;
+  return 0;
+}
+
+}  // namespace mpmice::mpm
