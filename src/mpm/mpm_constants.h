@@ -21,6 +21,14 @@ inline constexpr double kReferencePressure = 101325.0;
 /// (tests/integration/mpmice, mpmice_mpmd_equals_monolithic_*) compare two runs that share it.
 inline constexpr double kReferenceTemperature = 300.0;
 
+// ---- particle order ----------------------------------------------------------------------------
+
+/// Steps between particle sorts by (material, cell) when mpm.sort_particles is on. The order of the
+/// particles is the summation order of every particle-to-grid pass, so it moves results by round-off.
+/// Pinned by: no test on its value; the integration comparisons at 1e-10 (tests/integration/mpmice)
+/// run both launches with it.
+inline constexpr int kSortInterval = 20;
+
 // ---- regularisation -----------------------------------------------------------------------------
 
 /// Mass floor of the grid, as a fraction of the smallest particle mass: a node (or cell) with less
@@ -37,9 +45,14 @@ inline constexpr double kMassFloorFraction = 1e-12;
 inline constexpr double kSmallMassFraction = 1e-2;
 
 /// Relative tolerance of the J2 radial return's Newton iteration (|r| <= tol * q).
-/// Pinned by: tests/unit/mpm/test_constitutive.cpp, J2Plasticity.ReturnMappingHitsYieldSurface
-/// and J2Plasticity.PiecewiseHardeningAndFailure (a looser tolerance leaves q off the yield surface).
+/// Pinned by: tests/unit/mpm/test_constitutive.cpp, J2Plasticity.ReturnMappingHitsYieldSurface,
+/// only loosely: it checks q on the yield surface to 1e-6 (linear hardening converges in one step),
+/// so only a tolerance far looser than this one fails it.
 inline constexpr double kJ2ReturnTolerance = 1e-13;
+/// Iteration cap of that Newton iteration (exact in one step for linear hardening).
+/// Pinned by: no test on its value (the J2Plasticity tests of test_constitutive.cpp converge
+/// within it; a cap too small would fail them).
+inline constexpr int kJ2MaxIterations = 50;
 
 /// Tolerance, as a fraction of the mesh extent, with which a solid region may touch a non-symmetry
 /// mesh face before particle generation rejects it.

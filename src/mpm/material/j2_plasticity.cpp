@@ -70,7 +70,7 @@ void J2Plasticity::updateStress(ParticleSet& p, std::size_t begin, std::size_t e
       if (q > sy) {
         // Radial return: q - 3G dg = sigma_y(eps_p + dg); Newton (exact for linear hardening).
         double dg = (q - sy) / (3.0 * G + h);
-        for (int it = 0; it < 50; ++it) {
+        for (int it = 0; it < kJ2MaxIterations; ++it) {
           yield(p.eqps[i] + dg, sy, h);
           const double r = q - 3.0 * G * dg - sy;
           if (std::fabs(r) <= kJ2ReturnTolerance * q) break;

@@ -145,7 +145,7 @@ class MpmSolver {
   double massFloor_ = 0;
   bool surfaceForces_ = false;
   double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
-  int sortInterval_ = 20;
+  int sortInterval_ = kSortInterval;
   std::unique_ptr<NodeCellOperators> cells_;  // the MPM-ICE node-cell operators
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
