@@ -83,31 +83,29 @@ void BoundaryConditions::apply(core::Field& v) const {
   mirror(v, Parity::Vector);
 }
 
-void BoundaryConditions::fold(core::Field& f, Parity parity) const {
+template <class Op>
+void BoundaryConditions::forMirrorPairs(core::Field& f, Parity parity, const char* who, Op&& op) const {
   if (mirrors_.empty()) return;
   if (f.npts() != npts_)
-    throw std::logic_error("BoundaryConditions::fold: field '" + f.name() + "' is not on the node box");
+    throw std::logic_error(std::string("BoundaryConditions::") + who + ": field '" + f.name() +
+                           "' is not on the node box");
   for (const MirrorFace& mf : mirrors_)
     for (int c = 0; c < f.ncomp(); ++c) {
       double* a = f.data(c);
       const double s = parity == Parity::Vector && c == mf.dir ? -1.0 : 1.0;
-      for (const auto& [gh, mi] : mf.pairs) {
-        a[mi] += s * a[gh];
-        a[gh] = 0.0;
-      }
+      for (const auto& [gh, mi] : mf.pairs) op(a, gh, mi, s);
     }
 }
 
+void BoundaryConditions::fold(core::Field& f, Parity parity) const {
+  forMirrorPairs(f, parity, "fold", [](double* a, std::int64_t gh, std::int64_t mi, double s) {
+    a[mi] += s * a[gh];
+    a[gh] = 0.0;
+  });
+}
+
 void BoundaryConditions::mirror(core::Field& f, Parity parity) const {
-  if (mirrors_.empty()) return;
-  if (f.npts() != npts_)
-    throw std::logic_error("BoundaryConditions::mirror: field '" + f.name() + "' is not on the node box");
-  for (const MirrorFace& mf : mirrors_)
-    for (int c = 0; c < f.ncomp(); ++c) {
-      double* a = f.data(c);
-      const double s = parity == Parity::Vector && c == mf.dir ? -1.0 : 1.0;
-      for (const auto& [gh, mi] : mf.pairs) a[gh] = s * a[mi];
-    }
+  forMirrorPairs(f, parity, "mirror", [](double* a, std::int64_t gh, std::int64_t mi, double s) { a[gh] = s * a[mi]; });
 }
 
 }  // namespace mpmice::mpm

@@ -59,6 +59,10 @@ class BoundaryConditions {
     std::vector<std::pair<std::int64_t, std::int64_t>> pairs;  // (ghost, mirror) node offsets
   };
   std::vector<MirrorFace> mirrors_;  // in direction order
+  /// Calls op(component data, ghost, mirror, sign) for every mirror pair and component of f (a
+  /// node-box field; `who` names the caller in the error otherwise).
+  template <class Op>
+  void forMirrorPairs(core::Field& f, Parity parity, const char* who, Op&& op) const;
   std::int64_t npts_ = 0;            // points of the node box (checked against the fields)
 };
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "mpm/material/tensor.h"
+#include "mpm/mpm_constants.h"
 
 namespace mpmice::mpm {
 
@@ -69,10 +70,10 @@ void J2Plasticity::updateStress(ParticleSet& p, std::size_t begin, std::size_t e
       if (q > sy) {
         // Radial return: q - 3G dg = sigma_y(eps_p + dg); Newton (exact for linear hardening).
         double dg = (q - sy) / (3.0 * G + h);
-        for (int it = 0; it < 50; ++it) {
+        for (int it = 0; it < kJ2MaxIterations; ++it) {
           yield(p.eqps[i] + dg, sy, h);
           const double r = q - 3.0 * G * dg - sy;
-          if (std::fabs(r) <= 1e-13 * q) break;
+          if (std::fabs(r) <= kJ2ReturnTolerance * q) break;
           dg += r / (3.0 * G + h);
         }
         const double scale = 1.0 - 3.0 * G * dg / q;

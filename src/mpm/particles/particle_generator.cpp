@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/scene/shape.h"
+#include "mpm/mpm_constants.h"
 
 namespace mpmice::mpm {
 
@@ -33,7 +34,7 @@ void generateParticles(const core::Scene& scene, const core::Box& cells, Particl
       if (const auto bounds = core::scene_detail::shapeBounds(reg.shape, dim)) {
         const auto& [lo, hi] = *bounds;
         for (int d = 0; d < dim; ++d) {
-          const double tol = 1e-9 * (mesh.upper(d) - mesh.origin()[d]);
+          const double tol = kGeneratorFaceTolerance * (mesh.upper(d) - mesh.origin()[d]);
           const bool symLo = scene.boundary[2 * d].type == core::BoundaryType::Symmetry;
           const bool symHi = scene.boundary[2 * d + 1].type == core::BoundaryType::Symmetry;
           if ((!symLo && lo[d] < mesh.origin()[d] - tol) || (!symHi && hi[d] > mesh.upper(d) + tol)) {

@@ -9,8 +9,23 @@
 
 #include "mpm/grid/grid.h"
 #include "mpm/particles/particle_set.h"
+#include "mpm/shape/shape_function.h"
 
 namespace mpmice::mpm::kernels {
+
+/// Calls f.template operator()<Shape, Dim>() for the run-time shape and dimension.
+template <class F>
+void dispatch(ShapeKind k, int dim, F&& f) {
+  withShape(k, [&](auto s) {
+    using S = decltype(s);
+    if (dim == 1)
+      f.template operator()<S, 1>();
+    else if (dim == 2)
+      f.template operator()<S, 2>();
+    else
+      f.template operator()<S, 3>();
+  });
+}
 
 /// Stencil of one particle: first node and per-direction weights and physical gradients.
 template <class Shape, int Dim>

@@ -11,38 +11,15 @@
 
 namespace mpmice::mpm {
 
-using core::Centering;
 using core::Field;
+using kernels::dispatch;
 
 namespace {
-
-/// Calls f.template operator()<Shape, Dim>() for the run-time shape and dimension.
-template <class F>
-void dispatch(ShapeKind k, int dim, F&& f) {
-  withShape(k, [&](auto s) {
-    using S = decltype(s);
-    if (dim == 1)
-      f.template operator()<S, 1>();
-    else if (dim == 2)
-      f.template operator()<S, 2>();
-    else
-      f.template operator()<S, 3>();
-  });
-}
 
 std::string num(double v) {
   std::ostringstream os;
   os << v;
   return os.str();
-}
-
-/// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
-double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
-  const int idx[3] = {i, j, k};
-  double w = 1.0;
-  for (int d = 0; d < mesh.dim(); ++d)
-    if (idx[d] > 0 && idx[d] < mesh.cells()[d]) w *= 0.5;
-  return w;
 }
 
 }  // namespace
@@ -72,8 +49,6 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
   // 3. Constitutive models of the solids.
   models_.resize(scene_.materials.size());
-  cellStates_.resize(scene_.materials.size());
-  materialNodeMass_.resize(scene_.materials.size());
   for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
     const auto& mat = scene_.materials[m];
     if (mat.kind != core::MaterialKind::Solid) continue;
@@ -107,10 +82,12 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   }
   double minMass = 1e300;
   for (double m : p_.mass) minMass = std::min(minMass, m);
-  massFloor_ = 1e-12 * comm_.min(minMass);
+  massFloor_ = kMassFloorFraction * comm_.min(minMass);
   // Only the linear hat needs the cut-off: its gradient stays 1/dx where its weight vanishes. The C1
   // shapes (GIMP, B-splines) have grad w ~ sqrt(w) there, so dt f / m times grad w stays bounded.
   accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
+  cells_ = std::make_unique<NodeCellOperators>(scene_, decomp_.cellBox(comm_.rank()), *grid_, bcs_, p_, shape_,
+                                               massFloor_);
   migrateAndSort(true);
 }
 
@@ -202,6 +179,7 @@ void MpmSolver::assignArcAreas(int l) {
 void MpmSolver::beginStep(double dt) {
   if (!(dt > 0)) throw std::invalid_argument("MpmSolver::beginStep: dt must be > 0, got " + num(dt));
   dt_ = dt;
+  cells_->newStep();
   grid_->mass.fill(0.0);
   grid_->velocity.fill(0.0);
   grid_->force.fill(0.0);
@@ -397,7 +375,7 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   for (std::size_t i = 0; i < n; ++i) {
     int c[3] = {0, 0, 0};
     for (int d = 0; d < dim; ++d) {
-      c[d] = static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d)));
+      c[d] = cellCoordinate(mesh, d, p_.x[d][i]);
       if (c[d] < 0 || c[d] >= mesh.cells()[d] || !std::isfinite(p_.x[d][i])) {
         if (outside < 0) {
           outside = p_.id[i];
@@ -458,10 +436,7 @@ void MpmSolver::migrateAndSort(bool forceSort) {
     for (std::size_t k = 0; k + ps <= rbuf.size(); k += ps) {
       const std::size_t i = p_.size();
       p_.unpack(rbuf.data() + k);
-      int c[3] = {0, 0, 0};
-      for (int d = 0; d < dim; ++d)
-        c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))),
-                          0, mesh.cells()[d] - 1);
+      const auto c = cellOfParticle(mesh, p_, i, all);
       keys.push_back(static_cast<std::uint64_t>(all.index(c[0], c[1], c[2])));
       received = true;
     }
@@ -469,203 +444,6 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   }
   if (forceSort || received || !p_.groupedByMaterial()) p_.sortBy(sortKey_, perm_, scratch_);
   p_.updateMaterialRanges(static_cast<int>(scene_.materials.size()));
-}
-
-const SolidCellState& MpmSolver::cellState(int material) {
-  if (material < 0 || material >= static_cast<int>(models_.size()) || !models_[material])
-    throw std::invalid_argument("MpmSolver::cellState: material " + std::to_string(material) +
-                                " is not a solid of the scene");
-  Grid& g = *grid_;
-  const core::Box cells = decomp_.cellBox(comm_.rank());
-  auto& cs = cellStates_[material];
-  if (!cs) {
-    cs = std::make_unique<SolidCellState>();
-    cs->mass = Field("mass", Centering::Cell, cells, 1, 0);
-    cs->velocity = Field("velocity", Centering::Cell, cells, 3, 0);
-    cs->temperature = Field("temperature", Centering::Cell, cells, 1, 0);
-    cs->volume = Field("volume", Centering::Cell, cells, 1, 0);
-    cs->specificVolume = Field("specific_volume", Centering::Cell, cells, 1, 0);
-    materialNodeMass_[material] = Field("mass", Centering::Node, g.box(), 1, Grid::kGhost);
-  }
-  if (cellMomentum_.npts() == 0) {  // scratch shared by all materials, allocated once
-    cellMomentum_ = Field("momentum", Centering::Node, g.box(), 3, Grid::kGhost);
-    cellVolumeTemperature_ = Field("volume_temperature", Centering::Node, g.box(), 2, Grid::kGhost);
-  }
-  // Node mass, momentum, volume and m T of this material.
-  Field& nm = materialNodeMass_[material];
-  Field& mom = cellMomentum_;
-  Field& vt = cellVolumeTemperature_;
-  const auto [b, e] = p_.materialRange(material);
-  nm.fill(0.0);
-  mom.fill(0.0);
-  vt.fill(0.0);
-  double* mp[3] = {mom.data(0), mom.data(1), mom.data(2)};
-  const GridGeom geom = g.geom();
-  const int dim = scene_.mesh.dim();
-  dispatch(shape_, dim, [&]<class S, int D>() {
-    kernels::particlesToGrid<S, D>(p_, b, e, geom, nm.data(), mp);
-    kernels::Stencil<S, D> st;
-    double* vol = vt.data(0);
-    double* mt = vt.data(1);
-    for (std::size_t i = b; i < e; ++i) {
-      st.compute(p_, i, geom);
-      const double V = p_.vol[i], MT = p_.mass[i] * p_.temperature[i];
-      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
-        vol[k] += V * w;
-        mt[k] += MT * w;
-      });
-    }
-  });
-  bcs_.fold(nm, Parity::Scalar);
-  bcs_.fold(mom, Parity::Vector);
-  bcs_.fold(vt, Parity::Scalar);
-  g.sumAndFill({&nm, &mom, &vt});
-  const core::Mesh& mesh = scene_.mesh;
-  const int nc = 1 << dim;
-  core::forEach(cells, [&](int i, int j, int k) {
-    double m = 0, p[3] = {0, 0, 0}, V = 0, MT = 0;
-    for (int c = 0; c < nc; ++c) {
-      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
-      const double w = nodeShare(mesh, ni, nj, nk);
-      m += w * nm(ni, nj, nk);
-      for (int d = 0; d < 3; ++d) p[d] += w * mom(ni, nj, nk, d);
-      V += w * vt(ni, nj, nk, 0);
-      MT += w * vt(ni, nj, nk, 1);
-    }
-    cs->mass(i, j, k) = m;
-    for (int d = 0; d < 3; ++d) cs->velocity(i, j, k, d) = m > massFloor_ ? p[d] / m : 0.0;
-    cs->temperature(i, j, k) = m > massFloor_ ? MT / m : 0.0;
-    cs->volume(i, j, k) = V;
-    cs->specificVolume(i, j, k) = m > massFloor_ ? V / m : 0.0;
-  });
-  return *cs;
-}
-
-void MpmSolver::cellLagrangianMomentum(int material, Field& out) const {
-  const Field& nm = materialNodeMass_.at(material);
-  if (nm.npts() == 0)
-    throw std::logic_error("cellLagrangianMomentum: call cellState(material) first in this step");
-  const core::Mesh& mesh = scene_.mesh;
-  const int dim = mesh.dim(), nc = 1 << dim;
-  const Field& vL = grid_->velocityL;
-  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
-    double p[3] = {0, 0, 0};
-    for (int c = 0; c < nc; ++c) {
-      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
-      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk);
-      for (int d = 0; d < 3; ++d) p[d] += w * vL(ni, nj, nk, d);
-    }
-    for (int d = 0; d < 3; ++d) out(i, j, k, d) = p[d];
-  });
-}
-
-void MpmSolver::applyCellVelocityIncrement(int material, const Field& dv) {
-  const Field& nm = materialNodeMass_.at(material);
-  if (nm.npts() == 0)
-    throw std::logic_error("applyCellVelocityIncrement: call cellState(material) first in this step");
-  Grid& g = *grid_;
-  const core::Mesh& mesh = scene_.mesh;
-  const int dim = mesh.dim(), nc = 1 << dim;
-  g.remap.fill(0.0);  // node momentum increments
-  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
-    for (int c = 0; c < nc; ++c) {
-      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
-      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk);
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * dv(i, j, k, d);
-    }
-  });
-  g.sumAndFill({&g.remap});
-  const double* m = g.mass.data();
-  for (int d = 0; d < dim; ++d) {
-    double* vl = g.velocityL.data(d);
-    const double* dp = g.remap.data(d);
-    for (std::int64_t k = 0; k < g.numNodes(); ++k)
-      if (m[k] > massFloor_) vl[k] += dp[k] / m[k];
-  }
-  applyBC(g.velocityL);
-}
-
-void MpmSolver::addCellForce(int material, const Field& force) {
-  const Field& nm = materialNodeMass_.at(material);
-  if (nm.npts() == 0) throw std::logic_error("addCellForce: call cellState(material) first in this step");
-  const SolidCellState& cs = *cellStates_.at(material);
-  Grid& g = *grid_;
-  const core::Mesh& mesh = scene_.mesh;
-  const int dim = mesh.dim(), nc = 1 << dim;
-  g.remap.fill(0.0);  // node force contributions of this rank's cells
-  core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
-    const double mc = cs.mass(i, j, k);
-    if (!(mc > massFloor_)) return;
-    for (int c = 0; c < nc; ++c) {
-      const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
-      const double w = nodeShare(mesh, ni, nj, nk) * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * force(i, j, k, d);
-    }
-  });
-  g.sumAndFill({&g.remap});
-  for (int d = 0; d < dim; ++d) {
-    double* fe = g.externalForce.data(d);
-    const double* df = g.remap.data(d);
-    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
-  }
-}
-
-void MpmSolver::addCellPressureStress(const Field& pcell, double pRef) {
-  Grid& g = *grid_;
-  const core::Mesh& mesh = scene_.mesh;
-  const core::Box owned = decomp_.cellBox(comm_.rank());
-  g.remap.fill(0.0);
-  double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
-  const GridGeom geom = g.geom();
-  dispatch(shape_, mesh.dim(), [&]<class S, int D>() {
-    kernels::Stencil<S, D> st;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      int c[3] = {0, 0, 0};
-      for (int d = 0; d < D; ++d)
-        c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
-                          owned.hi[d]);
-      const double s = p_.vol[i] * (pcell(c[0], c[1], c[2]) - pRef);
-      if (s == 0.0) continue;
-      st.compute(p_, i, geom);
-      st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
-        f[0][k] -= s * gx;
-        if (D > 1) f[1][k] -= s * gy;
-        if (D > 2) f[2][k] -= s * gz;
-      });
-    }
-  });
-  bcs_.fold(g.remap, Parity::Vector);
-  g.sumAndFill({&g.remap});
-  for (int d = 0; d < mesh.dim(); ++d) {
-    double* fe = g.externalForce.data(d);
-    const double* df = g.remap.data(d);
-    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
-  }
-}
-
-void MpmSolver::addCellEnergy(int material, const Field& energy) {
-  const core::Mesh& mesh = scene_.mesh;
-  const core::Box owned = decomp_.cellBox(comm_.rank());
-  const double cv = scene_.materials.at(material).specific_heat;
-  const auto [b, e] = p_.materialRange(material);
-  std::vector<double>& cellMass = scratch_;
-  cellMass.assign(static_cast<std::size_t>(owned.numPts()), 0.0);
-  auto cellOf = [&](std::size_t i) {
-    int c[3] = {0, 0, 0};
-    for (int d = 0; d < mesh.dim(); ++d)
-      c[d] = std::clamp(static_cast<int>(std::floor((p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d))), owned.lo[d],
-                        owned.hi[d]);
-    return std::array<int, 3>{c[0], c[1], c[2]};
-  };
-  for (std::size_t i = b; i < e; ++i) {
-    const auto c = cellOf(i);
-    cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))] += p_.mass[i];
-  }
-  for (std::size_t i = b; i < e; ++i) {
-    const auto c = cellOf(i);
-    const double m = cellMass[static_cast<std::size_t>(owned.index(c[0], c[1], c[2]))];
-    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
-  }
 }
 
 Energies MpmSolver::energies() const {

@@ -16,10 +16,11 @@
 #include <memory>
 #include <vector>
 
+#include "mpm/cell/node_cell_operators.h"
 #include "mpm/grid/boundary_conditions.h"
-#include "mpm/grid/cell_state.h"
 #include "mpm/grid/grid.h"
 #include "mpm/material/constitutive_model.h"
+#include "mpm/mpm_constants.h"
 #include "mpm/particles/particle_generator.h"
 #include "mpm/particles/particle_set.h"
 #include "core/scene/scene.h"
@@ -55,13 +56,17 @@ class MpmSolver {
   [[nodiscard]] ShapeKind shapeKind() const { return shape_; }
   [[nodiscard]] const SchemeTraits& scheme() const { return *scheme_; }
   [[nodiscard]] const ConstitutiveModel& model(int material) const { return *models_[material]; }
+  /// The MPM-ICE node-cell transfer operators on this solver's grid and particles; beginStep()
+  /// starts a new step generation of their per-step data.
+  [[nodiscard]] NodeCellOperators& cells() { return *cells_; }
+  [[nodiscard]] const NodeCellOperators& cells() const { return *cells_; }
 
   /// Small-mass cut-off of the grid update with linear hats: a node whose mass is below this
   /// fraction of the smallest particle mass keeps v_L = v_n (no acceleration). Such nodes appear
   /// when a particle just enters a cell (weight ~ 0) while the hat's gradient stays 1/dx: f/m there
   /// is unbounded and, through the velocity gradient, blew up linear + USL at free surfaces
   /// (docs/mpm.md). GIMP and B-splines need none (grad w ~ sqrt(w) as w -> 0: bounded).
-  static constexpr double kSmallMassFraction = 1e-2;
+  static constexpr double kSmallMassFraction = mpm::kSmallMassFraction;
 
   /// The CFL time step: cfl * dx_min / max(c + |v|) over all particles, capped by dt_max.
   [[nodiscard]] double stableTimeStep() const;
@@ -74,30 +79,22 @@ class MpmSolver {
   // ---- phases (see the brief) ----------------------------------------------------------------
   void beginStep(double dt);
   void particlesToGrid();
-  /// Cell-centred state of solid material m (an extra particle-to-grid pass of that material).
-  const SolidCellState& cellState(int material);
+  /// Cell-centred state of solid material m: cells().cellState(m).
+  const SolidCellState& cellState(int material) { return cells_->cellState(material); }
   void computeInternalForces();
   /// Node force the coupler may add to before updateGrid() (zeroed by beginStep).
   [[nodiscard]] core::Field& externalNodeForce() { return grid_->externalForce; }
   void updateGrid();
-  /// Per-cell Lagrangian momentum of material m (after updateGrid; needs cellState(m) this step).
-  void cellLagrangianMomentum(int material, core::Field& out) const;
-  /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity.
-  void applyCellVelocityIncrement(int material, const core::Field& dv);
-  /// Adds per-cell forces on material m (owned cells, 3 components, e.g. ICE's pressure force)
-  /// to the external node force, shared among each cell's corner nodes in proportion to their
-  /// mass of m (the transpose of cellState's node-to-cell average; the total force is kept).
-  /// Call after cellState(m) and before updateGrid(). Collective.
-  void addCellForce(int material, const core::Field& force);
-  /// The mean-stress correction of MPM-ICE: the internal force of every particle uses
-  /// sigma + (p_cell - pRef) I, p_cell the pressure of the particle's cell (owned cells), so
-  /// the pressure force the fluid side applies does not count the solid's mean stress twice.
-  /// Adds -sum_p V_p (p_cell - pRef) grad w_ip to the external node force. Call after
-  /// computeInternalForces() and before updateGrid(). Collective.
-  void addCellPressureStress(const core::Field& cellPressure, double pRef);
-  /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to
-  /// its particles in each cell: one temperature rise dE / (m_cell cv) for all of them. Local.
-  void addCellEnergy(int material, const core::Field& energy);
+  // The MPM-ICE node-cell operators between updateGrid() and gridToParticles() (and the
+  // mean-stress and cell forces between computeInternalForces() and updateGrid()) are
+  // cells().X (mpm/cell/node_cell_operators.h); these forward to them.
+  void cellLagrangianMomentum(int material, core::Field& out) const { cells_->cellLagrangianMomentum(material, out); }
+  void applyCellVelocityIncrement(int material, const core::Field& dv) { cells_->applyCellVelocityIncrement(material, dv); }
+  void addCellForce(int material, const core::Field& force) { cells_->addCellForce(material, force); }
+  void addCellPressureStress(const core::Field& cellPressure, double pRef) {
+    cells_->addCellPressureStress(cellPressure, pRef);
+  }
+  void addCellEnergy(int material, const core::Field& energy) { cells_->addCellEnergy(material, energy); }
   void gridToParticles();
   void endStep();
 
@@ -148,11 +145,8 @@ class MpmSolver {
   double massFloor_ = 0;
   bool surfaceForces_ = false;
   double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
-  int sortInterval_ = 20;
-  // Cell state per material (built on demand) and its node masses.
-  std::vector<std::unique_ptr<SolidCellState>> cellStates_;
-  std::vector<core::Field> materialNodeMass_;
-  core::Field cellMomentum_, cellVolumeTemperature_;  // cellState() scratch (node momentum; V, m T)
+  int sortInterval_ = kSortInterval;
+  std::unique_ptr<NodeCellOperators> cells_;  // the MPM-ICE node-cell operators
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;

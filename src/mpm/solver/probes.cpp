@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "mpm/mpm_constants.h"
+
 namespace mpmice::mpm {
 
 namespace {
@@ -31,7 +33,7 @@ ProbeRecorder::ProbeRecorder(const MpmSolver& solver, const std::vector<core::Pr
   double h = 1e300;
   for (int d = 0; d < dim_; ++d) h = std::min(h, mesh.dx(d));
   // Distances equal to within round-off of the particle positions count as ties.
-  const double tieTol = 1e-10 * h * h;
+  const double tieTol = kProbeTieTolerance * h * h;
   for (const core::ProbeSpec& probe : probes) {
     std::vector<double> d2(p.size());
     double best = std::numeric_limits<double>::infinity();

@@ -5,10 +5,6 @@ namespace mpmice::coupler {
 SolidSide::SolidSide(mpm::MpmSolver& mpm) : mpm_(mpm) {
   const core::Box owned = mpm.decomposition().cellBox(mpm.comm().rank());
   for (int m : mpm.scene().solids()) fields_.emplace_back(m, mpm.scene().materials[m].name, owned);
-  dv_ = core::Field("dv", core::Centering::Cell, owned, 3, 0);
-  // The pressure at which the solids are stress-free: their EOS threshold (p(rho0) = p_ref).
-  if (!fields_.empty())
-    pRef_ = mpm.scene().materials[fields_.front().material].eos.get("threshold_pressure", 101325.0);
 }
 
 void SolidSide::beginStep(double dt) { mpm_.beginStep(dt); }
@@ -16,43 +12,29 @@ void SolidSide::beginStep(double dt) { mpm_.beginStep(dt); }
 void SolidSide::produceA() {
   mpm_.particlesToGrid();
   for (auto& f : fields_) {
-    const mpm::SolidCellState& s = mpm_.cellState(f.material);
+    const mpm::SolidCellState& s = mpm_.cells().cellState(f.material);  // with the absent-solid state
     const core::Box& b = f.mass.box();
     f.mass.copyRegion(s.mass, b, b);
     f.velocity.copyRegion(s.velocity, b, b);
     f.temperature.copyRegion(s.temperature, b, b);
     f.specificVolume.copyRegion(s.specificVolume, b, b);
-    // Cells the solid does not reach: an absent material still needs a valid state for the
-    // equilibrium pressure (its volume fraction is zero): reference specific volume, its
-    // neighbours' temperature is not known here, so the scene's reference 300 K.
-    const double v0 = 1.0 / mpm_.scene().materials[f.material].density;
-    core::forEach(b, [&](int i, int j, int k) {
-      if (f.mass(i, j, k) > 0 && f.specificVolume(i, j, k) > 0) return;
-      f.mass(i, j, k) = 0.0;
-      for (int d = 0; d < 3; ++d) f.velocity(i, j, k, d) = 0.0;
-      f.specificVolume(i, j, k) = v0;
-      if (!(f.temperature(i, j, k) > 0)) f.temperature(i, j, k) = 300.0;
-    });
   }
 }
 
 void SolidSide::consumeBProduceC() {
+  mpm::NodeCellOperators& cells = mpm_.cells();
   mpm_.computeInternalForces();
-  if (!fields_.empty()) mpm_.addCellPressureStress(fields_.front().pressure, pRef_);
-  for (auto& f : fields_) mpm_.addCellForce(f.material, f.pressureForce);
+  if (!fields_.empty()) cells.addCellPressureStress(fields_.front().pressure);  // p_ref: the solids' EOS
+  for (auto& f : fields_) cells.addCellForce(f.material, f.pressureForce);
   mpm_.updateGrid();
-  for (auto& f : fields_) mpm_.cellLagrangianMomentum(f.material, f.lagrangianMomentum);
+  for (auto& f : fields_) cells.cellLagrangianMomentum(f.material, f.lagrangianMomentum);
 }
 
 void SolidSide::consumeDFinishStep() {
+  mpm::NodeCellOperators& cells = mpm_.cells();
   for (auto& f : fields_) {
-    const core::Box& b = f.mass.box();
-    core::forEach(b, [&](int i, int j, int k) {
-      const double m = f.mass(i, j, k);
-      for (int d = 0; d < 3; ++d) dv_(i, j, k, d) = m > 0 ? f.exchangeMomentum(i, j, k, d) / m : 0.0;
-    });
-    mpm_.applyCellVelocityIncrement(f.material, dv_);
-    mpm_.addCellEnergy(f.material, f.exchangeEnergy);
+    cells.applyCellMomentumIncrement(f.material, f.exchangeMomentum);
+    cells.addCellEnergy(f.material, f.exchangeEnergy);
   }
   mpm_.gridToParticles();
   mpm_.endStep();

@@ -40,8 +40,6 @@ class SolidSide {
  private:
   mpm::MpmSolver& mpm_;
   std::vector<SolidExchangeFields> fields_;
-  core::Field dv_;  // scratch: velocity increments per cell
-  double pRef_ = 101325.0;
 };
 
 }  // namespace mpmice::coupler

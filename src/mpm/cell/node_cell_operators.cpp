@@ -1,0 +1,235 @@
+#include "mpm/cell/node_cell_operators.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "mpm/mpm_constants.h"
+#include "mpm/solver/kernels.h"
+
+namespace mpmice::mpm {
+
+using core::Centering;
+using core::Field;
+
+NodeCellOperators::NodeCellOperators(const core::Scene& scene, const core::Box& ownedCells, Grid& grid,
+                                     const BoundaryConditions& bcs, ParticleSet& particles, ShapeKind shape,
+                                     double massFloor)
+    : scene_(scene),
+      mesh_(scene.mesh),
+      cells_(ownedCells),
+      grid_(grid),
+      bcs_(bcs),
+      p_(particles),
+      shape_(shape),
+      massFloor_(massFloor),
+      pRef_(kReferencePressure),
+      states_(scene.materials.size()),
+      nodeMass_(scene.materials.size()) {
+  const std::vector<int> solids = scene.solids();
+  if (!solids.empty()) pRef_ = scene.materials[solids.front()].eos.get("threshold_pressure", kReferencePressure);
+}
+
+const SolidCellState& NodeCellOperators::current(int material, const char* op) const {
+  const SolidCellState& cs = states_.at(material);
+  if (cs.stamp != generation_) {
+    const std::string m = std::to_string(material);
+    throw std::logic_error(
+        std::string("NodeCellOperators::") + op + ": " +
+        (cs.stamp == 0 ? "no cell state of material " + m + " yet"
+                       : "the cell state of material " + m + " is from step generation " +
+                             std::to_string(cs.stamp) + ", this is generation " + std::to_string(generation_)) +
+        ": call cellState(" + m + ") first in this step");
+  }
+  return cs;
+}
+
+const SolidCellState& NodeCellOperators::cellState(int material) {
+  if (material < 0 || material >= static_cast<int>(scene_.materials.size()) ||
+      scene_.materials[material].kind != core::MaterialKind::Solid)
+    throw std::invalid_argument("NodeCellOperators::cellState: material " + std::to_string(material) +
+                                " is not a solid of the scene");
+  Grid& g = grid_;
+  SolidCellState& cs = states_[material];
+  if (cs.mass.npts() == 0) {
+    cs.mass = Field("mass", Centering::Cell, cells_, 1, 0);
+    cs.velocity = Field("velocity", Centering::Cell, cells_, 3, 0);
+    cs.temperature = Field("temperature", Centering::Cell, cells_, 1, 0);
+    cs.volume = Field("volume", Centering::Cell, cells_, 1, 0);
+    cs.specificVolume = Field("specific_volume", Centering::Cell, cells_, 1, 0);
+    nodeMass_[material] = Field("mass", Centering::Node, g.box(), 1, Grid::kGhost);
+  }
+  if (momentum_.npts() == 0) {  // scratch shared by all materials, allocated once
+    momentum_ = Field("momentum", Centering::Node, g.box(), 3, Grid::kGhost);
+    volumeTemperature_ = Field("volume_temperature", Centering::Node, g.box(), 2, Grid::kGhost);
+  }
+  // Node mass, momentum, volume and m T of this material.
+  Field& nm = nodeMass_[material];
+  Field& mom = momentum_;
+  Field& vt = volumeTemperature_;
+  const auto [b, e] = p_.materialRange(material);
+  nm.fill(0.0);
+  mom.fill(0.0);
+  vt.fill(0.0);
+  double* mp[3] = {mom.data(0), mom.data(1), mom.data(2)};
+  const GridGeom geom = g.geom();
+  kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
+    kernels::particlesToGrid<S, D>(p_, b, e, geom, nm.data(), mp);
+    kernels::Stencil<S, D> st;
+    double* vol = vt.data(0);
+    double* mt = vt.data(1);
+    for (std::size_t i = b; i < e; ++i) {
+      st.compute(p_, i, geom);
+      const double V = p_.vol[i], MT = p_.mass[i] * p_.temperature[i];
+      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
+        vol[k] += V * w;
+        mt[k] += MT * w;
+      });
+    }
+  });
+  bcs_.fold(nm, Parity::Scalar);
+  bcs_.fold(mom, Parity::Vector);
+  bcs_.fold(vt, Parity::Scalar);
+  g.sumAndFill({&nm, &mom, &vt});
+  // Node-to-cell average; a cell the solid does not reach gets the absent-solid state: an absent
+  // material still needs a valid state for ICE's equilibrium pressure (its volume fraction is
+  // zero): the reference specific volume and, as its neighbours' temperature is not known here,
+  // the reference temperature.
+  const double v0 = 1.0 / scene_.materials[material].density;
+  core::forEach(cells_, [&](int i, int j, int k) {
+    double m = 0, p[3] = {0, 0, 0}, V = 0, MT = 0;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double w) {
+      m += w * nm(ni, nj, nk);
+      for (int d = 0; d < 3; ++d) p[d] += w * mom(ni, nj, nk, d);
+      V += w * vt(ni, nj, nk, 0);
+      MT += w * vt(ni, nj, nk, 1);
+    });
+    const bool massive = m > massFloor_;
+    const double T = massive ? MT / m : 0.0, v = massive ? V / m : 0.0;
+    cs.volume(i, j, k) = V;
+    if (m > 0 && v > 0) {
+      cs.mass(i, j, k) = m;
+      for (int d = 0; d < 3; ++d) cs.velocity(i, j, k, d) = p[d] / m;
+      cs.temperature(i, j, k) = T;
+      cs.specificVolume(i, j, k) = v;
+    } else {  // absent solid
+      cs.mass(i, j, k) = 0.0;
+      for (int d = 0; d < 3; ++d) cs.velocity(i, j, k, d) = 0.0;
+      cs.temperature(i, j, k) = T > 0 ? T : kReferenceTemperature;
+      cs.specificVolume(i, j, k) = v0;
+    }
+  });
+  cs.stamp = generation_;
+  return cs;
+}
+
+void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) const {
+  current(material, "cellLagrangianMomentum");
+  const Field& nm = nodeMass_[material];
+  const Field& vL = grid_.velocityL;
+  core::forEach(cells_, [&](int i, int j, int k) {
+    double p[3] = {0, 0, 0};
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      const double w = share * nm(ni, nj, nk);
+      for (int d = 0; d < 3; ++d) p[d] += w * vL(ni, nj, nk, d);
+    });
+    for (int d = 0; d < 3; ++d) out(i, j, k, d) = p[d];
+  });
+}
+
+void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv) {
+  current(material, "applyCellVelocityIncrement");
+  const Field& nm = nodeMass_[material];
+  Grid& g = grid_;
+  const int dim = mesh_.dim();
+  g.remap.fill(0.0);  // node momentum increments
+  core::forEach(cells_, [&](int i, int j, int k) {
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      const double w = share * nm(ni, nj, nk);
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * dv(i, j, k, d);
+    });
+  });
+  g.sumAndFill({&g.remap});
+  const double* m = g.mass.data();
+  for (int d = 0; d < dim; ++d) {
+    double* vl = g.velocityL.data(d);
+    const double* dp = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k)
+      if (m[k] > massFloor_) vl[k] += dp[k] / m[k];
+  }
+  bcs_.apply(g.velocityL);
+}
+
+void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp) {
+  const SolidCellState& cs = current(material, "applyCellMomentumIncrement");
+  if (dv_.npts() == 0) dv_ = Field("dv", Centering::Cell, cells_, 3, 0);
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const double m = cs.mass(i, j, k);
+    for (int d = 0; d < 3; ++d) dv_(i, j, k, d) = m > 0 ? dp(i, j, k, d) / m : 0.0;
+  });
+  applyCellVelocityIncrement(material, dv_);
+}
+
+void NodeCellOperators::addCellForce(int material, const Field& force) {
+  const SolidCellState& cs = current(material, "addCellForce");
+  const Field& nm = nodeMass_[material];
+  Grid& g = grid_;
+  const int dim = mesh_.dim();
+  g.remap.fill(0.0);  // node force contributions of this rank's cells
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const double mc = cs.mass(i, j, k);
+    if (!(mc > massFloor_)) return;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      const double w = share * nm(ni, nj, nk) / mc;
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * force(i, j, k, d);
+    });
+  });
+  addRemapToExternalForce();
+}
+
+void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
+  Grid& g = grid_;
+  g.remap.fill(0.0);
+  double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const GridGeom geom = g.geom();
+  kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const auto c = cellOfParticle(mesh_, p_, i, cells_);
+      const double s = p_.vol[i] * (pcell(c[0], c[1], c[2]) - pRef);
+      if (s == 0.0) continue;
+      st.compute(p_, i, geom);
+      st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
+        f[0][k] -= s * gx;
+        if (D > 1) f[1][k] -= s * gy;
+        if (D > 2) f[2][k] -= s * gz;
+      });
+    }
+  });
+  bcs_.fold(g.remap, Parity::Vector);
+  addRemapToExternalForce();
+}
+
+void NodeCellOperators::addRemapToExternalForce() {
+  Grid& g = grid_;
+  g.sumAndFill({&g.remap});
+  for (int d = 0; d < mesh_.dim(); ++d) {
+    double* fe = g.externalForce.data(d);
+    const double* df = g.remap.data(d);
+    for (std::int64_t k = 0; k < g.numNodes(); ++k) fe[k] += df[k];
+  }
+}
+
+void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
+  const double cv = scene_.materials.at(material).specific_heat;
+  const auto [b, e] = p_.materialRange(material);
+  cellMass_.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
+  auto slot = [&](const std::array<int, 3>& c) { return static_cast<std::size_t>(cells_.index(c[0], c[1], c[2])); };
+  for (std::size_t i = b; i < e; ++i) cellMass_[slot(cellOfParticle(mesh_, p_, i, cells_))] += p_.mass[i];
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOfParticle(mesh_, p_, i, cells_);
+    const double m = cellMass_[slot(c)];
+    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
+  }
+}
+
+}  // namespace mpmice::mpm

@@ -1,0 +1,138 @@
+#pragma once
+/// @brief The MPM-ICE node-cell transfer operators of libmpm, in one place.
+///
+/// ICE lives on cell centres, MPM on nodes and particles. Everything that moves a quantity between
+/// the two sits here, written once on two helpers:
+///   cellOfParticle()   the (clamped) mesh cell of a particle
+///   forCellNodes()     the node-to-cell average: the corner nodes of a cell with each node's share
+///                      (1 / number of mesh cells around it, so mass is conserved on mesh faces)
+/// and the operators built on them, in the order of the MPM-ICE step:
+///   cellState(m)                    cell mass, velocity, temperature, volume, specific volume of
+///                                   solid m (absent-solid state where it does not reach)
+///   addCellPressureStress(p)        the mean-stress force: sigma + (p_cell - p_ref) I
+///   addCellForce(m, F)              the transpose of the node-to-cell average: a cell force to
+///                                   the nodes in proportion to their mass of m
+///   cellLagrangianMomentum(m, out)  the node-to-cell average of m v_L
+///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes
+///   addCellEnergy(m, E)             the exchange heat to the particles of each cell
+///
+/// Per-step data: cellState(m) and the node masses behind it carry the step generation they were
+/// computed in (newStep() starts a generation: MpmSolver::beginStep calls it). Every operator that
+/// uses them throws std::logic_error, naming itself, when they come from another step.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/field/field.h"
+#include "core/mesh/box.h"
+#include "core/mesh/mesh.h"
+#include "core/scene/scene.h"
+#include "mpm/cell/cell_state.h"
+#include "mpm/grid/boundary_conditions.h"
+#include "mpm/grid/grid.h"
+#include "mpm/particles/particle_set.h"
+#include "mpm/shape/shape_function.h"
+
+namespace mpmice::mpm {
+
+/// The mesh cell coordinate of position x in direction d (floor; not clamped).
+inline int cellCoordinate(const core::Mesh& mesh, int d, double x) {
+  return static_cast<int>(std::floor((x - mesh.origin()[d]) / mesh.dx(d)));
+}
+
+/// The mesh cell of particle i, clamped into `within` in the mesh's directions (0 beyond them).
+inline std::array<int, 3> cellOfParticle(const core::Mesh& mesh, const ParticleSet& p, std::size_t i,
+                                         const core::Box& within) {
+  std::array<int, 3> c{0, 0, 0};
+  for (int d = 0; d < mesh.dim(); ++d)
+    c[d] = std::clamp(cellCoordinate(mesh, d, p.x[d][i]), within.lo[d], within.hi[d]);
+  return c;
+}
+
+/// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
+inline double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
+  const int idx[3] = {i, j, k};
+  double w = 1.0;
+  for (int d = 0; d < mesh.dim(); ++d)
+    if (idx[d] > 0 && idx[d] < mesh.cells()[d]) w *= 0.5;
+  return w;
+}
+
+/// The node-to-cell average: calls f(ni, nj, nk, share) for each corner node of cell (i, j, k).
+template <class F>
+void forCellNodes(const core::Mesh& mesh, int i, int j, int k, F&& f) {
+  const int dim = mesh.dim(), nc = 1 << dim;
+  for (int c = 0; c < nc; ++c) {
+    const int ni = i + (c & 1), nj = j + (dim > 1 ? (c >> 1) & 1 : 0), nk = k + (dim > 2 ? (c >> 2) & 1 : 0);
+    f(ni, nj, nk, nodeShare(mesh, ni, nj, nk));
+  }
+}
+
+class NodeCellOperators {
+ public:
+  /// References into the solver that owns this (they must outlive it). `ownedCells`: this rank's
+  /// cells; `massFloor`: below it a node or cell has no velocity (kMassFloorFraction x the
+  /// smallest particle mass).
+  NodeCellOperators(const core::Scene& scene, const core::Box& ownedCells, Grid& grid, const BoundaryConditions& bcs,
+                    ParticleSet& particles, ShapeKind shape, double massFloor);
+
+  /// Starts a new step generation: per-step data of the previous one is refused from now on.
+  void newStep() { ++generation_; }
+  [[nodiscard]] std::uint64_t generation() const { return generation_; }
+  /// p_ref of the mean-stress correction: the first solid's EOS threshold_pressure (the pressure
+  /// at which the solids are stress-free), kReferencePressure when it gives none.
+  [[nodiscard]] double referencePressure() const { return pRef_; }
+
+  /// Cell-centred state of solid material m (an extra particle-to-grid pass of that material),
+  /// with the absent-solid state in cells it does not reach. Needs the node mass of this step's
+  /// particle-to-grid pass (the grid's). Throws std::invalid_argument if m is not a solid.
+  const SolidCellState& cellState(int material);
+  /// Per-cell Lagrangian momentum of material m: the node-to-cell average of m_node v_L (after the
+  /// grid update; needs cellState(m) this step).
+  void cellLagrangianMomentum(int material, core::Field& out) const;
+  /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity
+  /// (the transpose of the node-to-cell average, weighted by the node mass of m). Collective.
+  void applyCellVelocityIncrement(int material, const core::Field& dv);
+  /// The same for per-cell momentum increments [kg m/s] (ICE's exchange momentum): divided by the
+  /// cell mass of m (0 where it is absent), then applyCellVelocityIncrement. Collective.
+  void applyCellMomentumIncrement(int material, const core::Field& dp);
+  /// Adds per-cell forces on material m (owned cells, 3 components) to the external node force,
+  /// shared among each cell's corner nodes in proportion to their mass of m (the transpose of the
+  /// node-to-cell average; the total force is kept). After cellState(m). Collective.
+  void addCellForce(int material, const core::Field& force);
+  /// The mean-stress correction: the internal force of every particle uses sigma + (p_cell - pRef) I,
+  /// p_cell the pressure of the particle's cell (owned cells). Adds -sum_p V_p (p_cell - pRef)
+  /// grad w_ip to the external node force. Collective.
+  void addCellPressureStress(const core::Field& cellPressure, double pRef);
+  void addCellPressureStress(const core::Field& cellPressure) { addCellPressureStress(cellPressure, pRef_); }
+  /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to its
+  /// particles in each cell: one temperature rise dE / (m_cell cv) for all of them. Local.
+  void addCellEnergy(int material, const core::Field& energy);
+
+ private:
+  /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
+  const SolidCellState& current(int material, const char* op) const;
+  /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
+  void addRemapToExternalForce();
+
+  const core::Scene& scene_;
+  const core::Mesh& mesh_;
+  core::Box cells_;
+  Grid& grid_;
+  const BoundaryConditions& bcs_;
+  ParticleSet& p_;
+  ShapeKind shape_;
+  double massFloor_;
+  double pRef_;
+  std::uint64_t generation_ = 1;  // 0: the stamp of a state never computed
+  std::vector<SolidCellState> states_;    // per scene material (allocated on first use)
+  std::vector<core::Field> nodeMass_;     // node mass of each material (behind its cell state)
+  core::Field momentum_, volumeTemperature_;  // cellState() scratch (node momentum; V, m T)
+  core::Field dv_;                             // applyCellMomentumIncrement() scratch
+  std::vector<double> cellMass_;               // addCellEnergy() scratch
+};
+
+}  // namespace mpmice::mpm

@@ -1,0 +1,67 @@
+#pragma once
+/// @brief libmpm's named constants: the reference state and the regularisation constants (small-mass
+/// cut-offs, mass floors, tolerances) that were literals in src/mpm and the MPM-ICE solid side.
+///
+/// Each value is part of the numbers the tests reproduce; the comment names the test that would
+/// fail if it changed, or says that none does. Change one only with the tests it names.
+namespace mpmice::mpm {
+
+// ---- reference state ----------------------------------------------------------------------------
+
+/// [Pa] The pressure at which a solid is stress-free when its EOS does not give one
+/// (`threshold_pressure`); p_ref of the mean-stress correction sigma + (p - p_ref) I.
+/// Pinned by: no test directly. The scene catalog (core/scene/model_catalog.cpp) fills
+/// threshold_pressure = 101325 for parsed scenes, so the fallback only serves scenes built in code;
+/// tests/unit/scene/test_scene_parse.cpp pins the catalog's copy of the value.
+inline constexpr double kReferencePressure = 101325.0;
+
+/// [K] The temperature of the absent-solid state (a cell the solid does not reach still needs a
+/// valid state for ICE's equilibrium pressure; its volume fraction is zero).
+/// Pinned by: no test directly; the MPMD-against-in-process launch tests
+/// (tests/integration/mpmice, mpmice_mpmd_equals_monolithic_*) compare two runs that share it.
+inline constexpr double kReferenceTemperature = 300.0;
+
+// ---- particle order ----------------------------------------------------------------------------
+
+/// Steps between particle sorts by (material, cell) when mpm.sort_particles is on. The order of the
+/// particles is the summation order of every particle-to-grid pass, so it moves results by round-off.
+/// Pinned by: no test on its value; the integration comparisons at 1e-10 (tests/integration/mpmice)
+/// run both launches with it.
+inline constexpr int kSortInterval = 20;
+
+// ---- regularisation -----------------------------------------------------------------------------
+
+/// Mass floor of the grid, as a fraction of the smallest particle mass: a node (or cell) with less
+/// mass has no velocity (v = p / m is set to 0) and a cell below it is empty (absent-solid state).
+/// Pinned by: no test fails on its exact value (it only removes round-off-sized masses); the
+/// tests that would show a change are the integration comparisons at 1e-10
+/// (tests/integration/mpmice) and tests/unit/mpm/test_solver_setup.cpp (Phases.*).
+inline constexpr double kMassFloorFraction = 1e-12;
+
+/// Small-mass cut-off of the grid update with linear hats, as a fraction of the smallest particle
+/// mass: a node with less mass keeps v_L = v_n (see MpmSolver::kSmallMassFraction).
+/// Pinned by: tests/verification/mpm/test_mpm_bar.cpp, VibratingBar.LinearUslStableAtSmallMassNodes
+/// (without it linear + USL blew up at 50 cells).
+inline constexpr double kSmallMassFraction = 1e-2;
+
+/// Relative tolerance of the J2 radial return's Newton iteration (|r| <= tol * q).
+/// Pinned by: tests/unit/mpm/test_constitutive.cpp, J2Plasticity.ReturnMappingHitsYieldSurface,
+/// only loosely: it checks q on the yield surface to 1e-6 (linear hardening converges in one step),
+/// so only a tolerance far looser than this one fails it.
+inline constexpr double kJ2ReturnTolerance = 1e-13;
+/// Iteration cap of that Newton iteration (exact in one step for linear hardening).
+/// Pinned by: no test on its value (the J2Plasticity tests of test_constitutive.cpp converge
+/// within it; a cap too small would fail them).
+inline constexpr int kJ2MaxIterations = 50;
+
+/// Tolerance, as a fraction of the mesh extent, with which a solid region may touch a non-symmetry
+/// mesh face before particle generation rejects it.
+/// Pinned by: no test (the scene tests place solids well inside or on symmetry faces).
+inline constexpr double kGeneratorFaceTolerance = 1e-9;
+
+/// Probe ties: squared distances equal to within this fraction of dx_min^2 count as equal (the
+/// lowest particle id wins).
+/// Pinned by: tests/unit/mpm/test_probes.cpp, ProbeRecorder.PicksTheNearestParticleAndTheLowestIdOnTies.
+inline constexpr double kProbeTieTolerance = 1e-10;
+
+}  // namespace mpmice::mpm

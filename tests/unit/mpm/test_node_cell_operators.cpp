@@ -1,0 +1,230 @@
+// The MPM-ICE node-cell operators (mpm/cell/node_cell_operators.h): the node-to-cell average and
+// its transpose, uniform fields, the absent-solid state and the step stamp of per-step data.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "core/parallel/comm.h"
+#include "mpm/cell/node_cell_operators.h"
+#include "mpm/mpm_constants.h"
+#include "mpm/solver/mpm_solver.h"
+#include "mpm_problems.h"
+#include "serial_mpi.h"
+
+using namespace mpmice;
+using namespace mpmice::mpm;
+namespace pr = mpmice::mpm::problems;
+
+namespace {
+
+constexpr double kRho = 1000;
+
+// A solid block inside a 2D or 3D mesh of 8^dim cells of 0.25 (walls all round): the block covers
+// some cells and leaves the others empty.
+core::Scene scene(int dim) {
+  core::Scene s;
+  s.mesh = core::Mesh(dim, {0, 0, 0}, {0.25, 0.25, 0.25}, {8, 8, dim == 3 ? 8 : 1});
+  for (auto& f : s.boundary) f.type = core::BoundaryType::NoSlipWall;
+  s.materials = {pr::solid("block", kRho, pr::elastic("linear_elastic", 1e6, 0.25))};
+  core::ShapeSpec box;
+  box.type = "box";
+  box.lo = {0.5, 0.5, dim == 3 ? 0.5 : 0.0};
+  box.hi = {1.25, 1.0, dim == 3 ? 1.0 : 0.0};
+  s.geometry = {pr::region("block", box, "block", {2, 2, dim == 3 ? 2 : 1})};
+  return s;
+}
+
+core::Comm self() { return core::Comm(MPI_COMM_SELF); }
+
+constexpr double kU[3] = {0.3, -0.2, 0.1};
+
+// A solver after particle-to-grid with every particle at velocity kU and temperature 350 K.
+void start(MpmSolver& solver) {
+  auto& p = solver.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int d = 0; d < solver.scene().mesh.dim(); ++d) p.v[d][i] = kU[d];
+    p.temperature[i] = 350.0;
+  }
+  solver.beginStep(solver.stableTimeStep());
+  solver.particlesToGrid();
+}
+
+double sum(const core::Field& f, int comp = 0) {
+  double s = 0;
+  core::forEach(f.box(), [&](int i, int j, int k) { s += f(i, j, k, comp); });
+  return s;
+}
+
+}  // namespace
+
+// Every node's value is shared out completely among the mesh cells around it.
+TEST(NodeCellOperators, NodeSharesSumToOne) {
+  for (int dim : {1, 2, 3}) {
+    const core::Mesh mesh(dim, {0, 0, 0}, {1, 1, 1}, {3, dim > 1 ? 4 : 1, dim > 2 ? 2 : 1});
+    core::Field total("total", core::Centering::Node, mesh.nodeBox(), 1, 0, 0.0);
+    core::forEach(mesh.cellBox(), [&](int i, int j, int k) {
+      int corners = 0;
+      forCellNodes(mesh, i, j, k, [&](int ni, int nj, int nk, double share) {
+        total(ni, nj, nk) += share;
+        ++corners;
+      });
+      EXPECT_EQ(corners, 1 << dim);
+    });
+    core::forEach(mesh.nodeBox(), [&](int i, int j, int k) { EXPECT_DOUBLE_EQ(total(i, j, k), 1.0) << dim; });
+  }
+}
+
+TEST(NodeCellOperators, CellOfParticleIsClamped) {
+  const core::Mesh mesh(2, {0, 0, 0}, {0.5, 0.25, 1}, {4, 4, 1});
+  ParticleSet p;
+  p.resize(2);
+  p.x[0][0] = 1.2;
+  p.x[1][0] = 0.3;
+  p.x[0][1] = -0.1;
+  p.x[1][1] = 5.0;
+  const auto c0 = cellOfParticle(mesh, p, 0, mesh.cellBox());
+  EXPECT_EQ(c0[0], 2);
+  EXPECT_EQ(c0[1], 1);
+  EXPECT_EQ(c0[2], 0);
+  const auto c1 = cellOfParticle(mesh, p, 1, mesh.cellBox());
+  EXPECT_EQ(c1[0], 0);
+  EXPECT_EQ(c1[1], 3);
+  EXPECT_EQ(cellCoordinate(mesh, 0, -0.1), -1);
+}
+
+// A uniform particle state maps to itself in every cell the solid reaches; the others hold the
+// absent-solid state.
+TEST(NodeCellOperators, UniformStateMapsToItselfAndEmptyCellsAreAbsent) {
+  for (int dim : {2, 3}) {
+    MpmSolver solver(scene(dim), self());
+    start(solver);
+    const SolidCellState& cs = solver.cells().cellState(0);
+    double particleMass = 0;
+    for (double m : solver.particles().mass) particleMass += m;
+    EXPECT_NEAR(sum(cs.mass), particleMass, 1e-12 * particleMass) << dim;
+    int full = 0, empty = 0;
+    core::forEach(cs.mass.box(), [&](int i, int j, int k) {
+      if (cs.mass(i, j, k) > 0) {
+        ++full;
+        for (int d = 0; d < dim; ++d) EXPECT_NEAR(cs.velocity(i, j, k, d), kU[d], 1e-12);
+        EXPECT_NEAR(cs.temperature(i, j, k), 350.0, 1e-9);
+        EXPECT_NEAR(cs.specificVolume(i, j, k), cs.volume(i, j, k) / cs.mass(i, j, k), 1e-15);
+      } else {
+        ++empty;
+        for (int d = 0; d < 3; ++d) EXPECT_EQ(cs.velocity(i, j, k, d), 0.0);
+        EXPECT_EQ(cs.specificVolume(i, j, k), 1.0 / kRho);
+        EXPECT_EQ(cs.temperature(i, j, k), kReferenceTemperature);
+      }
+    });
+    EXPECT_GT(full, 0);
+    EXPECT_GT(empty, 0);
+    EXPECT_EQ(cs.stamp, solver.cells().generation());
+  }
+}
+
+// The transpose (addCellForce) spreads a cell quantity to the nodes in proportion to their mass:
+// the spread cell mass adds up to the cell mass, and m_c u goes to m_n u at every node.
+TEST(NodeCellOperators, TransposeIsAdjointOfTheNodeToCellAverage) {
+  for (int dim : {2, 3}) {
+    MpmSolver solver(scene(dim), self());
+    start(solver);
+    NodeCellOperators& ops = solver.cells();
+    const SolidCellState& cs = ops.cellState(0);
+    core::Field force("force", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+    core::forEach(force.box(), [&](int i, int j, int k) {
+      for (int d = 0; d < 3; ++d) force(i, j, k, d) = cs.mass(i, j, k) * kU[d];
+    });
+    ops.addCellForce(0, force);
+    const Grid& g = solver.grid();
+    const core::Field& fe = g.externalForce;
+    // Owned nodes only (the grid box has a ghost layer).
+    const core::Box nodes = solver.scene().mesh.nodeBox();
+    double spread[3] = {0, 0, 0}, cellTotal[3] = {0, 0, 0};
+    core::forEach(nodes, [&](int i, int j, int k) {
+      for (int d = 0; d < dim; ++d) {
+        spread[d] += fe(i, j, k, d);
+        EXPECT_NEAR(fe(i, j, k, d), g.mass(i, j, k) * kU[d], 1e-12 * (1 + g.mass(i, j, k)));
+      }
+    });
+    for (int d = 0; d < dim; ++d) {
+      cellTotal[d] = sum(force, d);
+      EXPECT_NEAR(spread[d], cellTotal[d], 1e-12 * std::abs(cellTotal[d])) << dim << " " << d;
+    }
+    // And back: the node-to-cell average of m_n u (cellLagrangianMomentum of v_L = u) is m_c u.
+    solver.updateGrid();
+    Grid& gm = solver.grid();
+    core::forEach(gm.velocityL.box(), [&](int i, int j, int k) {
+      for (int d = 0; d < 3; ++d) gm.velocityL(i, j, k, d) = kU[d];
+    });
+    core::Field P("P", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+    ops.cellLagrangianMomentum(0, P);
+    core::forEach(P.box(), [&](int i, int j, int k) {
+      for (int d = 0; d < 3; ++d) EXPECT_NEAR(P(i, j, k, d), force(i, j, k, d), 1e-12);
+    });
+  }
+}
+
+// The exchange momentum divided by the cell mass: m_c du everywhere gives every particle du.
+TEST(NodeCellOperators, MomentumIncrementIsDividedByTheCellMass) {
+  MpmSolver solver(scene(2), self());
+  start(solver);
+  NodeCellOperators& ops = solver.cells();
+  const SolidCellState& cs = ops.cellState(0);
+  solver.computeInternalForces();
+  solver.updateGrid();
+  core::Field dp("dp", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+  core::forEach(dp.box(), [&](int i, int j, int k) { dp(i, j, k, 1) = 0.05 * cs.mass(i, j, k); });
+  const double v0 = solver.centerOfMassVelocity()[1];
+  ops.applyCellMomentumIncrement(0, dp);
+  solver.gridToParticles();
+  solver.endStep();
+  EXPECT_NEAR(solver.centerOfMassVelocity()[1] - v0, 0.05, 1e-9);  // interior block
+}
+
+TEST(NodeCellOperators, ReferencePressureIsTheSolidsThreshold) {
+  auto s = scene(2);
+  EXPECT_EQ(MpmSolver(s, self()).cells().referencePressure(), kReferencePressure);
+  s.materials[0].eos.params = {{"threshold_pressure", 2e5}};
+  EXPECT_EQ(MpmSolver(s, self()).cells().referencePressure(), 2e5);
+}
+
+// Per-step data of one step refuses to serve in another: each operator names itself.
+TEST(NodeCellOperators, StampRefusesStaleData) {
+  MpmSolver solver(scene(2), self());
+  NodeCellOperators& ops = solver.cells();
+  const core::Box owned = solver.decomposition().cellBox(0);
+  core::Field cell3("c", core::Centering::Cell, owned, 3, 0, 0.0);
+  auto expectRefused = [&](const std::string& op, auto&& call) {
+    try {
+      call();
+      ADD_FAILURE() << op << " accepted stale data";
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find(op), std::string::npos) << e.what();
+    }
+  };
+  // Never computed.
+  expectRefused("cellLagrangianMomentum", [&] { ops.cellLagrangianMomentum(0, cell3); });
+  start(solver);
+  ops.cellState(0);
+  EXPECT_NO_THROW(ops.addCellForce(0, cell3));
+  solver.computeInternalForces();
+  solver.updateGrid();
+  EXPECT_NO_THROW(ops.cellLagrangianMomentum(0, cell3));
+  solver.gridToParticles();
+  solver.endStep();
+  // The next step, before cellState(0): the state of the last step is refused.
+  solver.beginStep(solver.stableTimeStep());
+  solver.particlesToGrid();
+  expectRefused("cellLagrangianMomentum", [&] { ops.cellLagrangianMomentum(0, cell3); });
+  expectRefused("applyCellVelocityIncrement", [&] { ops.applyCellVelocityIncrement(0, cell3); });
+  expectRefused("applyCellMomentumIncrement", [&] { ops.applyCellMomentumIncrement(0, cell3); });
+  expectRefused("addCellForce", [&] { ops.addCellForce(0, cell3); });
+  try {
+    ops.addCellForce(0, cell3);
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("call cellState(0) first in this step"), std::string::npos) << e.what();
+  }
+  ops.cellState(0);
+  EXPECT_NO_THROW(ops.addCellForce(0, cell3));
+}
