@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/mesh/mesh.h"
-#include "core/scene/coupling_options.h"
+#include "core/scene/options.h"
 
 namespace mpmice::core {
 
@@ -124,7 +124,7 @@ struct BoundarySpec {
 /// particle set's surface, pointing away from `center`), on the particles of `material` inside
 /// `shape`, ramped linearly over `ramp` seconds from `start`.
 struct LoadSpec {
-  std::string type;
+  LoadType type = LoadType::Pressure;
   std::string material;
   ShapeSpec shape;
   RealVect traction{0, 0, 0};
@@ -188,14 +188,14 @@ struct IceOptions {
 
 struct ConvergenceSpec {
   std::string field;
-  std::string type = "relative";  // absolute | relative | residual_relative
+  MeasureType type = MeasureType::Relative;
   double limit = 1e-6;
   bool strict = false;            // strict: must hold; suffices: enough on its own
   bool operator==(const ConvergenceSpec&) const = default;
 };
 
 struct AccelerationSpec {
-  std::string type = "none";      // none | constant | aitken | iqn_ils
+  AccelerationType type = AccelerationType::None;
   double relaxation = 0.5;        // constant; the initial one for aitken and iqn_ils
   int reuse = 8;                  // iqn_ils: past steps kept
   double filter = 1e-8;           // iqn_ils: QR filter threshold

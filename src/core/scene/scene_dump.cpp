@@ -226,8 +226,8 @@ void loadsAndSources(std::ostream& o, const Scene& s) {
   if (!s.loads.empty()) {
     o << "loads:\n";
     for (const auto& l : s.loads) {
-      o << "  - {type: " << l.type << ", material: " << quote(l.material) << ", shape: " << shape(l.shape, dim);
-      if (l.type == "pressure") o << ", pressure: " << num(l.pressure) << ", center: " << vec(l.center, dim);
+      o << "  - {type: " << name(l.type) << ", material: " << quote(l.material) << ", shape: " << shape(l.shape, dim);
+      if (l.type == LoadType::Pressure) o << ", pressure: " << num(l.pressure) << ", center: " << vec(l.center, dim);
       else o << ", traction: " << vec(l.traction, dim);
       o << ", start: " << num(l.start) << ", ramp: " << num(l.ramp) << "}\n";
     }
@@ -266,7 +266,7 @@ void options(std::ostream& o, const Scene& s) {
   if (!c.convergence.empty()) {
     o << "  convergence:\n";
     for (const auto& cv : c.convergence)
-      o << "    - {field: " << quote(cv.field) << ", type: " << cv.type << ", limit: " << num(cv.limit)
+      o << "    - {field: " << quote(cv.field) << ", type: " << name(cv.type) << ", limit: " << num(cv.limit)
         << ", strict: " << flag(cv.strict) << "}\n";
   }
   if (c.fluid == FluidSolver::OpenFoam) {
@@ -277,9 +277,9 @@ void options(std::ostream& o, const Scene& s) {
       << num(f.fluid_density) << "\n";
   }
   const AccelerationSpec& a = c.acceleration;
-  o << "  acceleration: {type: " << a.type;
-  if (a.type != "none") o << ", relaxation: " << num(a.relaxation);
-  if (a.type == "iqn_ils") o << ", reuse: " << a.reuse << ", filter: " << num(a.filter);
+  o << "  acceleration: {type: " << name(a.type);
+  if (a.type != AccelerationType::None) o << ", relaxation: " << num(a.relaxation);
+  if (a.type == AccelerationType::IqnIls) o << ", reuse: " << a.reuse << ", filter: " << num(a.filter);
   o << "}\n";
   const OutputSpec& out = s.output;
   o << "output:\n  directory: " << quote(out.directory) << "\n  interval: " << num(out.interval) << "\n  fields: [";

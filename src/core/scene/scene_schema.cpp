@@ -437,12 +437,12 @@ class SchemaReader {
     const YamlMap m = v.map();
     LoadSpec l;
     l.where = v.loc();
-    l.type = m.required("type").choice({"pressure", "traction"}, "load type");
+    l.type = m.required("type").option(kLoadNames, "load type");
     const std::vector<std::string> pressureKeys{"type", "material", "shape", "pressure", "center", "start", "ramp"};
     const std::vector<std::string> tractionKeys{"type", "material", "shape", "traction", "start", "ramp"};
-    const bool pressure = l.type == "pressure";
+    const bool pressure = l.type == LoadType::Pressure;
     allowFor(m, pressure ? pressureKeys : tractionKeys, pressure ? tractionKeys : pressureKeys,
-             "a " + l.type + " load takes " + joinNames(pressure ? pressureKeys : tractionKeys));
+             "a " + std::string(name(l.type)) + " load takes " + joinNames(pressure ? pressureKeys : tractionKeys));
     const MaterialKind solid = MaterialKind::Solid;
     l.material = materialRef(m.required("material"), &solid, "loads act on solid particles");
     l.shape = readShape(m.required("shape"));
@@ -564,7 +564,7 @@ class SchemaReader {
             {"exchange_momentum", "lagrangian_momentum", "pressure", "pressure_force", "solid_velocity",
              "interface_force", "interface_displacement"},
             "exchanged field");
-        cs.type = cm.choice("type", cs.type, {"absolute", "relative", "residual_relative"}, "convergence measure");
+        cs.type = cm.option("type", cs.type, kMeasureNames, "convergence measure");
         cs.limit = cm.number("limit", cs.limit, Range::positive());
         cs.strict = cm.boolean("strict", cs.strict);
         c.convergence.push_back(cs);
@@ -572,10 +572,10 @@ class SchemaReader {
     if (const auto acc = m.get("acceleration")) {
       const YamlMap am = acc->map();
       AccelerationSpec& a = c.acceleration;
-      a.type = am.required("type").choice({"none", "constant", "aitken", "iqn_ils"}, "acceleration");
-      if (a.type == "none") am.allow({"type"}, "acceleration 'none' takes no parameters");
-      if (a.type == "constant" || a.type == "aitken") am.allow({"type", "relaxation"});
-      if (a.type == "iqn_ils") am.allow({"type", "relaxation", "reuse", "filter"});
+      a.type = am.required("type").option(kAccelerationNames, "acceleration");
+      if (a.type == AccelerationType::None) am.allow({"type"}, "acceleration 'none' takes no parameters");
+      if (a.type == AccelerationType::Constant || a.type == AccelerationType::Aitken) am.allow({"type", "relaxation"});
+      if (a.type == AccelerationType::IqnIls) am.allow({"type", "relaxation", "reuse", "filter"});
       a.relaxation = am.number("relaxation", a.relaxation, Range::openClosed(0, 1));
       a.reuse = static_cast<int>(am.integer("reuse", a.reuse, 0, 1000));
       a.filter = am.number("filter", a.filter, Range::nonNegative());

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/scene/coupling_options.h"
+#include "core/scene/options.h"
 #include "core/scene/scene.h"
 
 namespace mpmice::core::scene_detail {
@@ -60,6 +60,16 @@ class YamlValue {
   [[nodiscard]] std::string string() const;
   /// One of `valid`; else "unknown <noun> 'x'; valid: ... (did you mean 'y'?)".
   [[nodiscard]] std::string choice(const std::vector<std::string>& valid, const std::string& noun) const;
+  /// One of the names of `table` (options.h), as its enum value; else the error of choice().
+  template <class E, std::size_t N>
+  [[nodiscard]] E option(const std::array<std::pair<E, std::string_view>, N>& table, const std::string& noun) const {
+    std::vector<std::string> names;
+    for (const auto& [v, n] : table) names.emplace_back(n);
+    const std::string chosen = choice(names, noun);
+    for (const auto& [v, n] : table)
+      if (n == chosen) return v;
+    return table[0].first;  // not reached: choice() throws for a name not in the table
+  }
   [[nodiscard]] std::vector<YamlValue> list() const;
   /// A list of exactly `dim` numbers in r, zero-filled to three components.
   [[nodiscard]] RealVect vector(int dim, const Range& r = Range::any()) const;
@@ -104,12 +114,8 @@ class YamlMap {
   template <class E, std::size_t N>
   [[nodiscard]] E option(const std::string& key, E fallback, const std::array<std::pair<E, std::string_view>, N>& table,
                          const std::string& noun) const {
-    std::vector<std::string> names;
-    for (const auto& [v, n] : table) names.emplace_back(n);
-    const std::string chosen = choice(key, std::string(nameIn(table, fallback)), names, noun);
-    for (const auto& [v, n] : table)
-      if (n == chosen) return v;
-    return fallback;
+    const auto v = get(key);
+    return v ? v->option(table, noun) : fallback;
   }
   [[nodiscard]] RealVect vector(const std::string& key, int dim, const RealVect& fallback,
                                 const Range& r = Range::any()) const;

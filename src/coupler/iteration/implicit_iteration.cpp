@@ -39,11 +39,11 @@ ImplicitIteration::ImplicitIteration(const core::CouplingSpec& spec, std::vector
                                      const core::Comm& comm)
     : spec_(spec), comm_(comm) {
   for (auto& c : measures) {
-    auto m = makeConvergenceMeasure(c.type, c.limit);
+    auto m = makeConvergenceMeasure(std::string(core::name(c.type)), c.limit);
     measures_.push_back({std::move(c), std::move(m)});
   }
   AccelerationParams a;
-  a.type = spec.acceleration.type;
+  a.type = std::string(core::name(spec.acceleration.type));
   a.relaxation = spec.acceleration.relaxation;
   a.reuse = spec.acceleration.reuse;
   a.filter = spec.acceleration.filter;

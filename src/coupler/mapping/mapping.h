@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "coupler/mapping/point_cloud.h"
-#include "core/scene/coupling_options.h"
+#include "core/scene/options.h"
 
 namespace mpmice::coupler {
 

@@ -65,9 +65,6 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains);
   for (std::size_t l = 0; l < scene_.loads.size(); ++l) {
     const auto& ld = scene_.loads[l];
-    if (ld.type != "pressure" && ld.type != "traction")
-      throw std::invalid_argument("loads[" + std::to_string(l) + "].type: unknown load '" + ld.type +
-                                  "'; valid choices: pressure, traction");
     int mat = -1;
     for (std::size_t m = 0; m < scene_.materials.size(); ++m)
       if (scene_.materials[m].name == ld.material) mat = static_cast<int>(m);
@@ -78,7 +75,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
       if (p_.material[i] == mat &&
           contains(ld.shape, {p_.x[0][i], p_.x[1][i], p_.x[2][i]}, mesh.dim()))
         p_.load[i] = static_cast<std::int32_t>(l);
-    if (ld.type == "pressure" && mesh.dim() == 2) assignArcAreas(static_cast<int>(l));
+    if (ld.type == core::LoadType::Pressure && mesh.dim() == 2) assignArcAreas(static_cast<int>(l));
   }
   double minMass = 1e300;
   for (double m : p_.mass) minMass = std::min(minMass, m);
@@ -203,7 +200,7 @@ void MpmSolver::computeLoads() {
       f = std::min(1.0, (time_ - ld.start) / ld.ramp);
     const double area = p_.loadArea[i] > 0 ? p_.loadArea[i]
                                            : p_.vol0[i] / std::pow(p_.vol0[i], invDim);  // one layer thick
-    if (ld.type == "traction") {
+    if (ld.type == core::LoadType::Traction) {
       for (int d = 0; d < dim; ++d) p_.fext[d][i] = f * area * ld.traction[d];
       continue;
     }

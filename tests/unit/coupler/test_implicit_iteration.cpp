@@ -49,8 +49,8 @@ core::CouplingSpec spec(int maxIterations, bool acceptUnconverged) {
   return s;  // acceleration none
 }
 
-const std::vector<core::ConvergenceSpec> kStrictSlowSufficesFast{{"slow", "absolute", 1e-12, true},
-                                                                 {"fast", "absolute", 1e-12, false}};
+const std::vector<core::ConvergenceSpec> kStrictSlowSufficesFast{{"slow", core::MeasureType::Absolute, 1e-12, true},
+                                                                 {"fast", core::MeasureType::Absolute, 1e-12, false}};
 
 TEST(ImplicitIteration, AFailingStrictMeasureKeepsIteratingToTheLimitAndStops) {
   const core::Comm self(MPI_COMM_SELF);
@@ -90,8 +90,8 @@ TEST(ImplicitIteration, AcceptUnconvergedEndsTheStepAtTheLimitUnconverged) {
 
 TEST(ImplicitIteration, ASufficesMeasureEndsTheStepWhenNoStrictOneFails) {
   const core::Comm self(MPI_COMM_SELF);
-  const std::vector<core::ConvergenceSpec> sufficesOnly{{"slow", "absolute", 1e-12, false},
-                                                        {"fast", "absolute", 1e-12, false}};
+  const std::vector<core::ConvergenceSpec> sufficesOnly{{"slow", core::MeasureType::Absolute, 1e-12, false},
+                                                        {"fast", core::MeasureType::Absolute, 1e-12, false}};
   ImplicitIteration it(spec(50, false), sufficesOnly, self);
   TwoFields f;
   const StepReport r = it.iterate(f.views(), "the step at t = 0", [&] { f.pass(); }, [] {}, [](bool) {});

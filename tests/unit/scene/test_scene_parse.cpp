@@ -178,7 +178,7 @@ TEST(SceneParse, DefaultsAreFilledIn) {
   EXPECT_EQ(s.ice.advection, "second_order");
   EXPECT_DOUBLE_EQ(s.ice.exchange_momentum, 1e15);
   EXPECT_EQ(s.coupling.schedule, core::Schedule::Monolithic);
-  EXPECT_EQ(s.coupling.acceleration.type, "none");
+  EXPECT_EQ(s.coupling.acceleration.type, core::AccelerationType::None);
   EXPECT_EQ(s.output.directory, "output");
   EXPECT_EQ(s.periodic(), (std::array<bool, 3>{false, false, false}));
   EXPECT_EQ(s.fluids(), std::vector<int>{0});
@@ -252,7 +252,7 @@ TEST(SceneParse, EverythingIsRead) {
   EXPECT_DOUBLE_EQ(s.ice.exchange_pairs[1].momentum, 1e12);  // the section default
   EXPECT_EQ(s.coupling.mpm_ranks, 2);
   EXPECT_EQ(s.coupling.ice_ranks, 3);
-  EXPECT_EQ(s.coupling.convergence.at(1).type, "absolute");
+  EXPECT_EQ(s.coupling.convergence.at(1).type, core::MeasureType::Absolute);
   EXPECT_EQ(s.coupling.acceleration.reuse, 4);
   EXPECT_EQ(s.output.fields, (std::vector<std::string>{"pressure", "velocity"}));
   EXPECT_FALSE(s.output.enabled);

@@ -148,7 +148,7 @@ inline core::Scene lameScene(double dx, const std::string& shape, double ramp = 
   ann.outer_radius = l.ro;
   s.geometry = {region("cylinder", ann, "steel", {ppc, ppc, 1})};
   core::LoadSpec load;
-  load.type = "pressure";
+  load.type = core::LoadType::Pressure;
   load.material = "steel";
   load.shape = ann;
   load.shape.outer_radius = l.ri + dx / ppc;  // the inner particle layer

@@ -131,7 +131,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   std::unique_ptr<ImplicitIteration> iteration;
   if (implicit) {
     auto conv = scene.coupling.convergence;
-    if (conv.empty()) conv.push_back({"interface_displacement", "relative", 1e-4, true});
+    if (conv.empty()) conv.push_back({"interface_displacement", core::MeasureType::Relative, 1e-4, true});
     for (const auto& c : conv)
       if (c.field != "interface_displacement" && c.field != "interface_force")
         throw std::invalid_argument("coupling.convergence: field '" + c.field +

@@ -16,8 +16,8 @@ std::vector<core::ConvergenceSpec> volumeMeasures(const core::CouplingSpec& spec
   const bool parallel = core::isParallel(spec.schedule);
   std::vector<core::ConvergenceSpec> conv = spec.convergence;
   if (conv.empty()) {
-    for (const std::string f : {"pressure_force", "exchange_momentum"}) conv.push_back({f, "relative", 1e-6, true});
-    if (parallel) conv.push_back({"solid_velocity", "relative", 1e-6, true});
+    for (const std::string f : {"pressure_force", "exchange_momentum"}) conv.push_back({f, core::MeasureType::Relative, 1e-6, true});
+    if (parallel) conv.push_back({"solid_velocity", core::MeasureType::Relative, 1e-6, true});
   }
   for (const auto& c : conv)
     if (!parallel && !isFluidOutput(c.field))

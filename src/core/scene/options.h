@@ -1,5 +1,6 @@
 #pragma once
-/// @brief The coupling section's named choices, parsed once from the scene into enums.
+/// @brief The scene's named choices, parsed once into enums (the model families, shape
+/// functions and update schemes are chosen by name through their registries instead).
 ///
 /// Each enum has one table of its scene names (kScheduleNames, ...); the schema reads a name
 /// through it (an unknown name is an error listing the valid ones), and name() turns a value
@@ -41,6 +42,29 @@ inline constexpr std::array<std::pair<CouplingMode, std::string_view>, 2> kCoupl
 }};
 
 /// The scene name of a value (every value is in its table).
+/// coupling.acceleration.type (coupler/acceleration/acceleration.h).
+enum class AccelerationType { None, Constant, Aitken, IqnIls };
+/// coupling.convergence[].type (coupler/convergence/convergence_measure.h).
+enum class MeasureType { Absolute, Relative, ResidualRelative };
+/// loads[].type: a pressure on a solid's surface, or a traction.
+enum class LoadType { Pressure, Traction };
+
+inline constexpr std::array<std::pair<AccelerationType, std::string_view>, 4> kAccelerationNames{{
+    {AccelerationType::None, "none"},
+    {AccelerationType::Constant, "constant"},
+    {AccelerationType::Aitken, "aitken"},
+    {AccelerationType::IqnIls, "iqn_ils"},
+}};
+inline constexpr std::array<std::pair<MeasureType, std::string_view>, 3> kMeasureNames{{
+    {MeasureType::Absolute, "absolute"},
+    {MeasureType::Relative, "relative"},
+    {MeasureType::ResidualRelative, "residual_relative"},
+}};
+inline constexpr std::array<std::pair<LoadType, std::string_view>, 2> kLoadNames{{
+    {LoadType::Pressure, "pressure"},
+    {LoadType::Traction, "traction"},
+}};
+
 template <class E, std::size_t N>
 constexpr std::string_view nameIn(const std::array<std::pair<E, std::string_view>, N>& table, E e) {
   for (const auto& [v, n] : table)
@@ -51,6 +75,9 @@ inline std::string_view name(Schedule s) { return nameIn(kScheduleNames, s); }
 inline std::string_view name(FluidSolver f) { return nameIn(kFluidSolverNames, f); }
 inline std::string_view name(InterfaceMapping m) { return nameIn(kInterfaceMappingNames, m); }
 inline std::string_view name(CouplingMode m) { return nameIn(kCouplingModeNames, m); }
+inline std::string_view name(AccelerationType a) { return nameIn(kAccelerationNames, a); }
+inline std::string_view name(MeasureType m) { return nameIn(kMeasureNames, m); }
+inline std::string_view name(LoadType l) { return nameIn(kLoadNames, l); }
 
 /// Implicit schedules repeat a step until the acceptance checks pass; parallel ones let both
 /// sides step from the other's last values.
