@@ -14,6 +14,7 @@
 
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -21,11 +22,6 @@ namespace mpmice::ice {
 using core::forEach;
 
 namespace {
-constexpr double kTraceMass = 1e-200;
-constexpr double kMaxOut = 0.9;
-// Velocities below this [m/s] are zero: upwind tails ahead of waves decay geometrically and
-// would otherwise reach denormal numbers, which are two orders of magnitude slower.
-constexpr double kTinyVelocity = 1e-150;
 enum Acc { kMass = 0, kMomX, kMomY, kMomZ, kE, kVol, kEint, kNumAcc };
 }
 
@@ -147,13 +143,13 @@ void IceSolver::advectFluids() {
     });
   }
 
-  // Positivity: a donor whose outflows over all its faces would exceed kMaxOut of its mass has them
+  // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
   // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
   for (int r = 0; r < nm; ++r) {
     const double* ms = st_.mat[r].mass.data();
     double* sc = outScale_.data(r);
     const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
-    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOut * ms[c] ? kMaxOut * ms[c] / sc[c] : 1.0;
+    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
   }
   ghosts_->fill(outScale_);
   for (int d = 0; d < dim; ++d) {
@@ -214,7 +210,7 @@ void IceSolver::advectFluids() {
       }
       const double eE = a[kE][c] * inv - 0.5 * ke;
       const double eA = a[kEint][c] * inv;
-      if (eA > 0 && eE < 0.1 * eA) {
+      if (eA > 0 && eE < kMinEnergyShare * eA) {
         e[c] = eA;
         ++fallbacks_;
       } else {

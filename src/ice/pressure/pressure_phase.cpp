@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {

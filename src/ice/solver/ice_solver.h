@@ -112,8 +112,6 @@ class IceSolver {
   void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
   void fillMaterialGhosts(bool lagrangian);
   void solveSemiImplicit();
-  /// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure.
-  static constexpr double kMaxSolidFraction = 1.0 - 1e-9;
   void explicitIncrement();
   /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
   void divergence();
