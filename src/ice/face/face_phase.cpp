@@ -2,7 +2,7 @@
 // face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density).
 #include <cmath>
 
-#include "ice/exchange/pointwise_exchange.h"
+#include "ice/exchange/face_exchange.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -25,35 +25,27 @@ void IceSolver::computeFaceVelocities() {
     const bool inLo = bc_.touches(2 * d) && bc_.type(2 * d) == core::BoundaryType::Inflow;
     const bool inHi = bc_.touches(2 * d + 1) && bc_.type(2 * d + 1) == core::BoundaryType::Inflow;
     struct Ptr {
-      const double *m, *u, *v, *th;
+      const double *m, *u;
       double* uf;
     };
     std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      ptr[r] = {m.mass.data(), m.vel.data(d), m.spvol.data(), m.theta.data(), m.velFace[d].data()};
+      ptr[r] = {m.mass.data(), m.vel.data(d), m.velFace[d].data()};
     }
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       const double dpdx = (p[cR] - p[cL]) / dx;
-      double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials], x[kMaxMaterials], th[kMaxMaterials];
+      double x[kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
+      faceMaterialValues(st_.mat, cL, cR, th, vf);
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
         const double mL = P.m[cL], mR = P.m[cR];
         const double msum = mL + mR;
         const double t1 = msum > 0 ? (mL * P.u[cL] + mR * P.u[cR]) / msum : 0.5 * (P.u[cL] + P.u[cR]);
-        const double vbar = faceSpecificVolume(mL, P.v[cL], mR, P.v[cR]);
-        x[r] = t1 - dt * vbar * dpdx + dt * g;
-        if (exch) {
-          th[r] = 0.5 * (P.th[cL] + P.th[cR]);
-          s[r] = th[r] / vbar;
-        }
+        x[r] = t1 - dt * vf[r] * dpdx + dt * g;
       }
-      if (exch) {
-        for (int r = 0; r < nm; ++r)
-          for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * K_[r * nm + q] * th[r] * th[q];
-        pointwiseExchange(nm, s, w, x, 1);
-      }
+      if (exch) faceExchange(nm, dt, K_.data(), th, vf, x);
       const int idx[3] = {i, j, k};
       const bool atLo = inLo && idx[d] == owned_.lo[d], atHi = inHi && idx[d] == owned_.hi[d] + 1;
       for (int r = 0; r < nm; ++r) {
