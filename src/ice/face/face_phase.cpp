@@ -4,6 +4,7 @@
 
 #include "ice/exchange/face_exchange.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -58,21 +59,22 @@ void IceSolver::computeFaceVelocities() {
   }
 }
 
-void IceSolver::computeFacePressure() {
-  const int dim = mesh_.dim();
+void computeFacePressures(IceState& st, const core::Box& owned, int dim) {
   for (int d = 0; d < dim; ++d) {
-    forEach(owned_.faces(d), [&](int i, int j, int k) {
+    forEach(owned.faces(d), [&](int i, int j, int k) {
       int l[3] = {i, j, k};
       l[d] -= 1;
       double rL = 0, rR = 0;
-      for (const MaterialState& m : st_.mat) {
+      for (const MaterialState& m : st.mat) {
         rL += m.mass(l[0], l[1], l[2]);
         rR += m.mass(i, j, k);
       }
-      const double pL = st_.press(l[0], l[1], l[2]), pR = st_.press(i, j, k);
-      st_.pressFace[d](i, j, k) = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
+      const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
+      st.pressFace[d](i, j, k) = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
     });
   }
 }
+
+void IceSolver::computeFacePressure() { computeFacePressures(st_, owned_, mesh_.dim()); }
 
 }  // namespace mpmice::ice

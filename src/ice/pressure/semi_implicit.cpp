@@ -10,6 +10,7 @@
 #include "ice/exchange/face_exchange.h"
 #include "ice/linear/bicgstab.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -87,7 +88,7 @@ void IceSolver::solvePressureSystem() {
 void IceSolver::solveSemiImplicit() {
   const int dim = mesh_.dim();
   const int nm = numMaterials();
-  divergence();
+  computeVolumeFluxes(st_, mesh_, owned_);
   assembleSemiImplicit();
   solvePressureSystem();
   Field& x = st_.dp;
@@ -102,7 +103,7 @@ void IceSolver::solveSemiImplicit() {
       for (int r = 0; r < nm; ++r) st_.mat[r].velFace[d](i, j, k) -= dt_ * semi_.mobility[r][d](i, j, k) * g;
     });
   }
-  divergence();
+  computeVolumeFluxes(st_, mesh_, owned_);
   forEach(owned_, [&](int i, int j, int k) { st_.press(i, j, k) = st_.pressEq(i, j, k) + x(i, j, k); });
 }
 

@@ -117,9 +117,6 @@ class IceSolver {
   void solveSemiImplicit();
   void assembleSemiImplicit();
   void solvePressureSystem();
-  void explicitIncrement();
-  /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
-  void divergence();
 
   core::Comm comm_;
   core::Mesh mesh_;
