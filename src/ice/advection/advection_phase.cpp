@@ -14,6 +14,7 @@
 
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -21,13 +22,9 @@ namespace mpmice::ice {
 using core::forEach;
 
 namespace {
-constexpr double kTraceMass = 1e-200;
-constexpr double kMaxOut = 0.9;
-// Velocities below this [m/s] are zero: upwind tails ahead of waves decay geometrically and
-// would otherwise reach denormal numbers, which are two orders of magnitude slower.
-constexpr double kTinyVelocity = 1e-150;
-enum Acc { kMass = 0, kMomX, kMomY, kMomZ, kE, kVol, kEint, kNumAcc };
-}
+using namespace advected;
+constexpr int kNumAcc = kCount;
+}  // namespace
 
 void IceSolver::advectFluids() {
   fillMaterialGhosts(true);
@@ -39,14 +36,20 @@ void IceSolver::advectFluids() {
   const bool second = secondOrder_;
   const core::Box& sb = st_.press.box();
   const std::size_t npts = static_cast<std::size_t>(sb.numPts());
-  acc_.resize(static_cast<std::size_t>(nm * kNumAcc));
+  if (adv_.mat.size() != static_cast<std::size_t>(nm)) {
+    adv_.mat.assign(static_cast<std::size_t>(nm), {});
+    for (auto& am : adv_.mat)
+      for (int d = 0; d < dim; ++d)
+        am.faceFlux[d] = core::Field("flux", core::Centering::Cell, owned_.faces(d), kNumAcc, 0);
+    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
+  }
   for (int r = 0; r < nm; ++r) {
     const MaterialState& m = st_.mat[r];
     if (m.external) continue;
     double* a[kNumAcc];
     for (int q = 0; q < kNumAcc; ++q) {
-      acc_[r * kNumAcc + q].resize(npts);
-      a[q] = acc_[r * kNumAcc + q].data();
+      adv_.mat[r].conserved[q].resize(npts);
+      a[q] = adv_.mat[r].conserved[q].data();
     }
     const double *ms = m.mass.data(), *e = m.eintL.data(), *v = m.spvolL.data();
     const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
@@ -58,19 +61,14 @@ void IceSolver::advectFluids() {
         ke += u[d][c] * u[d][c];
       }
       a[kMass][c] = mass;
-      a[kE][c] = mass * (e[c] + 0.5 * ke);
-      a[kVol][c] = mass * v[c];
+      a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
+      a[kVolume][c] = mass * v[c];
       a[kEint][c] = mass * e[c];
     }
   }
 
-  if (faceFlux_.size() != static_cast<std::size_t>(nm)) {
-    faceFlux_.assign(static_cast<std::size_t>(nm), {});
-    for (auto& ff : faceFlux_)
-      for (int d = 0; d < dim; ++d) ff[d] = core::Field("flux", core::Centering::Cell, owned_.faces(d), kNumAcc, 0);
-    outScale_ = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
-  }
-  outScale_.fill(0.0);
+  core::Field& outScale = adv_.outflowScale;
+  outScale.fill(0.0);
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   struct Ptr {
     const double *th, *sv, *u[3], *e, *vL, *uf;
@@ -88,8 +86,8 @@ void IceSolver::advectFluids() {
       MaterialState& m = st_.mat[r];
       Ptr& P = ptr[r];
       P = {m.theta.data(), m.spvol.data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
-           m.spvolL.data(), m.velFace[d].data(), {}, outScale_.data(r), m.external};
-      for (int q = 0; q < kNumAcc; ++q) P.flux[q] = faceFlux_[r][d].data(q);
+           m.spvolL.data(), m.velFace[d].data(), {}, outScale.data(r), m.external};
+      for (int q = 0; q < kNumAcc; ++q) P.flux[q] = adv_.mat[r].faceFlux[d].data(q);
     }
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t fi = fb.index(i, j, k);
@@ -123,8 +121,8 @@ void IceSolver::advectFluids() {
           ke += uq * uq;
         }
         const double ef = face(P.e);
-        fl[kE] = ef + 0.5 * ke;
-        fl[kVol] = face(P.vL);
+        fl[kEnergy] = ef + 0.5 * ke;
+        fl[kVolume] = face(P.vL);
         fl[kEint] = ef;
       }
       const double scale = s2 > 0 ? s1 / s2 : 0.0;
@@ -147,26 +145,26 @@ void IceSolver::advectFluids() {
     });
   }
 
-  // Positivity: a donor whose outflows over all its faces would exceed kMaxOut of its mass has them
+  // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
   // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
   for (int r = 0; r < nm; ++r) {
     const double* ms = st_.mat[r].mass.data();
-    double* sc = outScale_.data(r);
+    double* sc = outScale.data(r);
     const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
-    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOut * ms[c] ? kMaxOut * ms[c] / sc[c] : 1.0;
+    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
   }
-  ghosts_->fill(outScale_);
+  ghosts_->fill(outScale);
   for (int d = 0; d < dim; ++d) {
     const std::int64_t sd = strides[d];
     const core::Box fb = owned_.faces(d);
     for (int r = 0; r < nm; ++r) {
       if (st_.mat[r].external) continue;
-      const core::Field& ff = faceFlux_[r][d];
-      const double* sc = outScale_.data(r);
+      const core::Field& ff = adv_.mat[r].faceFlux[d];
+      const double* sc = outScale.data(r);
       double* a[kNumAcc];
       const double* f[kNumAcc];
       for (int q = 0; q < kNumAcc; ++q) {
-        a[q] = acc_[r * kNumAcc + q].data();
+        a[q] = adv_.mat[r].conserved[q].data();
         f[q] = ff.data(q);
       }
       forEach(fb, [&](int i, int j, int k) {
@@ -190,7 +188,7 @@ void IceSolver::advectFluids() {
     MaterialState& m = st_.mat[r];
     if (m.external) continue;
     const double* a[kNumAcc];
-    for (int q = 0; q < kNumAcc; ++q) a[q] = acc_[r * kNumAcc + q].data();
+    for (int q = 0; q < kNumAcc; ++q) a[q] = adv_.mat[r].conserved[q].data();
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
     const double *eL = m.eintL.data(), *vL = m.spvolL.data();
@@ -212,16 +210,16 @@ void IceSolver::advectFluids() {
         u[d][c] = ud;
         ke += ud * ud;
       }
-      const double eE = a[kE][c] * inv - 0.5 * ke;
+      const double eE = a[kEnergy][c] * inv - 0.5 * ke;
       const double eA = a[kEint][c] * inv;
-      if (eA > 0 && eE < 0.1 * eA) {
+      if (eA > 0 && eE < kMinEnergyShare * eA) {
         e[c] = eA;
         ++fallbacks_;
       } else {
         e[c] = eE;
       }
       ms[c] = mass;
-      v[c] = a[kVol][c] * inv;
+      v[c] = a[kVolume][c] * inv;
     }
   }
   t_ += dt;

@@ -3,6 +3,7 @@
 /// `solid_bulk`; `bulk_modulus`, `threshold_pressure`, `reference_density`). Pressure depends on
 /// density only; the supplied temperature gives e = cv T. p <= 0 lies below its range.
 #include "ice/eos/eos.h"
+#include "ice/ice_constants.h"
 #include "core/material/solid_bulk_eos.h"
 
 namespace mpmice::ice {
@@ -26,8 +27,8 @@ class ExternalSolidEos final : public Eos {
     (void)e;
     for (std::size_t i = 0; i < n; ++i) c2[i] = law_.dpdrho(rho[i]);
   }
-  /// No caloric relation: the supplied temperature sets e; here e = cv * 300 K.
-  [[nodiscard]] double internalEnergy(double, double) const override { return cv() * 300.0; }
+  /// No caloric relation: the supplied temperature sets e; here e = cv * kReferenceTemperature.
+  [[nodiscard]] double internalEnergy(double, double) const override { return cv() * kReferenceTemperature; }
   [[nodiscard]] const core::SolidBulkEos& law() const { return law_; }
 
  private:

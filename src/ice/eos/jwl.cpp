@@ -27,17 +27,4 @@ double Jwl::internalEnergy(double rho, double p) const {
   return (p - pc) / (w_ * rho);
 }
 
-void Jwl::density(std::size_t n, const double* p, const double* e, double* rho, double* drhodp) const {
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ei = e[i];
-    const double guess = ei > 0 ? std::max(p[i] / (w_ * ei), 1e-6 * rho0_) : rho0_;
-    const double r = invertPressure(p[i], std::min(guess, 2.0 * rho0_),
-                                    [&](double x, double* pp, double* dd) { eval(x, ei, pp, dd); });
-    double pp, dd;
-    eval(r, ei, &pp, &dd);
-    rho[i] = r;
-    drhodp[i] = dd > 0 ? 1.0 / dd : 0.0;
-  }
-}
-
 }  // namespace mpmice::ice

@@ -28,18 +28,4 @@ double MieGruneisen::internalEnergy(double rho, double p) const {
   return (p - p0e) / (g0_ * rho0_);
 }
 
-void MieGruneisen::density(std::size_t n, const double* p, const double* e, double* rho, double* drhodp) const {
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ei = e[i];
-    const double guess = rho0_ * (1.0 + (p[i] - p0_) / (rho0_ * c0_ * c0_));
-    double r = invertPressure(p[i], guess > 0.1 * rho0_ ? guess : rho0_,
-                              [&](double x, double* pp, double* dd) { eval(x, ei, pp, dd); });
-    // The derivative at the root (the Hugoniot is singular at eta = 1/s; Newton stays below it).
-    double pp, dd;
-    eval(r, ei, &pp, &dd);
-    rho[i] = r;
-    drhodp[i] = dd > 0 ? 1.0 / dd : 0.0;
-  }
-}
-
 }  // namespace mpmice::ice

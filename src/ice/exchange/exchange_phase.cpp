@@ -19,7 +19,7 @@ void IceSolver::exchange() {
   const int nm = numMaterials();
   const int dim = mesh_.dim();
   const double V = mesh_.cellVolume();
-  const double dt = dt_;
+  const double dtV = dt_ * V;
   for (MaterialState& m : st_.mat) {
     m.dMom.fill(0.0);
     m.dEnergy.fill(0.0);
@@ -50,11 +50,9 @@ void IceSolver::exchange() {
     if (anyK_) {
       for (int r = 0; r < nm; ++r) {
         s[r] = mass[r];
-        for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * V * K_[r * nm + q] * th[r] * th[q];
-        for (int d = 0; d < dim; ++d) {
-          x[d * nm + r] = x0[d * nm + r] = ptr[r].uL[d][c];
-        }
+        for (int d = 0; d < dim; ++d) x[d * nm + r] = x0[d * nm + r] = ptr[r].uL[d][c];
       }
+      exchangeCouplings(nm, dtV, K_.data(), th, w);
       pointwiseExchange(nm, s, w, x, dim);
       double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
       for (int r = 0; r < nm; ++r) {
@@ -80,9 +78,9 @@ void IceSolver::exchange() {
       for (int r = 0; r < nm; ++r) {
         const MaterialState& m = st_.mat[r];
         s[r] = mass[r] * ptr[r].cv;
-        for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * V * H_[r * nm + q] * th[r] * th[q];
         x[r] = x0[r] = m.eos->temperature(1.0 / ptr[r].vL[c], ptr[r].eL[c]);
       }
+      exchangeCouplings(nm, dtV, H_.data(), th, w);
       pointwiseExchange(nm, s, w, x, 1);
       for (int r = 0; r < nm; ++r) {
         const double de = ptr[r].cv * (x[r] - x0[r]);

@@ -49,4 +49,11 @@ inline void pointwiseExchange(int n, double* s, double* w, double* x, int nrhs) 
   }
 }
 
+/// The couplings w_rq = scale K_rq theta_r theta_q of the exchange between n materials (K and w
+/// n x n, row-major): scale = dt V in a cell (phase 10), dt at a face (phases 3 and 5).
+inline void exchangeCouplings(int n, double scale, const double* K, const double* theta, double* w) {
+  for (int r = 0; r < n; ++r)
+    for (int q = 0; q < n; ++q) w[r * n + q] = scale * K[r * n + q] * theta[r] * theta[q];
+}
+
 }  // namespace mpmice::ice

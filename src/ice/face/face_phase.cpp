@@ -2,8 +2,9 @@
 // face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density).
 #include <cmath>
 
-#include "ice/exchange/pointwise_exchange.h"
+#include "ice/exchange/face_exchange.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -25,35 +26,27 @@ void IceSolver::computeFaceVelocities() {
     const bool inLo = bc_.touches(2 * d) && bc_.type(2 * d) == core::BoundaryType::Inflow;
     const bool inHi = bc_.touches(2 * d + 1) && bc_.type(2 * d + 1) == core::BoundaryType::Inflow;
     struct Ptr {
-      const double *m, *u, *v, *th;
+      const double *m, *u;
       double* uf;
     };
     std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      ptr[r] = {m.mass.data(), m.vel.data(d), m.spvol.data(), m.theta.data(), m.velFace[d].data()};
+      ptr[r] = {m.mass.data(), m.vel.data(d), m.velFace[d].data()};
     }
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       const double dpdx = (p[cR] - p[cL]) / dx;
-      double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials], x[kMaxMaterials], th[kMaxMaterials];
+      double x[kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
+      faceMaterialValues(st_.mat, cL, cR, th, vf);
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
         const double mL = P.m[cL], mR = P.m[cR];
         const double msum = mL + mR;
         const double t1 = msum > 0 ? (mL * P.u[cL] + mR * P.u[cR]) / msum : 0.5 * (P.u[cL] + P.u[cR]);
-        const double vbar = faceSpecificVolume(mL, P.v[cL], mR, P.v[cR]);
-        x[r] = t1 - dt * vbar * dpdx + dt * g;
-        if (exch) {
-          th[r] = 0.5 * (P.th[cL] + P.th[cR]);
-          s[r] = th[r] / vbar;
-        }
+        x[r] = t1 - dt * vf[r] * dpdx + dt * g;
       }
-      if (exch) {
-        for (int r = 0; r < nm; ++r)
-          for (int q = 0; q < nm; ++q) w[r * nm + q] = dt * K_[r * nm + q] * th[r] * th[q];
-        pointwiseExchange(nm, s, w, x, 1);
-      }
+      if (exch) faceExchange(nm, dt, K_.data(), th, vf, x);
       const int idx[3] = {i, j, k};
       const bool atLo = inLo && idx[d] == owned_.lo[d], atHi = inHi && idx[d] == owned_.hi[d] + 1;
       for (int r = 0; r < nm; ++r) {
@@ -66,21 +59,22 @@ void IceSolver::computeFaceVelocities() {
   }
 }
 
-void IceSolver::computeFacePressure() {
-  const int dim = mesh_.dim();
+void computeFacePressures(IceState& st, const core::Box& owned, int dim) {
   for (int d = 0; d < dim; ++d) {
-    forEach(owned_.faces(d), [&](int i, int j, int k) {
+    forEach(owned.faces(d), [&](int i, int j, int k) {
       int l[3] = {i, j, k};
       l[d] -= 1;
       double rL = 0, rR = 0;
-      for (const MaterialState& m : st_.mat) {
+      for (const MaterialState& m : st.mat) {
         rL += m.mass(l[0], l[1], l[2]);
         rR += m.mass(i, j, k);
       }
-      const double pL = st_.press(l[0], l[1], l[2]), pR = st_.press(i, j, k);
-      st_.pressFace[d](i, j, k) = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
+      const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
+      st.pressFace[d](i, j, k) = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
     });
   }
 }
+
+void IceSolver::computeFacePressure() { computeFacePressures(st_, owned_, mesh_.dim()); }
 
 }  // namespace mpmice::ice

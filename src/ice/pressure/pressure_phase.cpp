@@ -1,10 +1,12 @@
-// IceSolver phases 2 and 5: the equilibrium pressure of each cell and the explicit pressure
+// IceSolver phases 2 and 5 (and the units computeVolumeFluxes, explicitPressureIncrement): the equilibrium pressure of each cell and the explicit pressure
 // increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -97,51 +99,52 @@ void IceSolver::computeEquilibriumPressure() {
   fillMaterialGhosts(false);
 }
 
-void IceSolver::divergence() {
-  const int dim = mesh_.dim();
-  const int nm = numMaterials();
-  const core::Box& sb = st_.press.box();
+void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned) {
+  const int dim = mesh.dim();
+  const core::Box& sb = st.press.box();
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   // Face volume fluxes U_f = sum_r theta_r,f u_f,r, theta from the upwind cell.
   for (int d = 0; d < dim; ++d) {
-    const core::Box fb = owned_.faces(d);
+    const core::Box fb = owned.faces(d);
     const std::int64_t sd = strides[d];
-    double* U = st_.volFlux[d].data();
+    double* U = st.volFlux[d].data();
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       double f = 0;
-      for (int r = 0; r < nm; ++r) {
-        const MaterialState& m = st_.mat[r];
+      for (const MaterialState& m : st.mat) {
         const double u = m.velFace[d].data()[fi];
         f += u * m.theta.data()[u > 0 ? cL : cR];
       }
       U[fi] = f;
     });
   }
-  forEach(owned_, [&](int i, int j, int k) {
+  forEach(owned, [&](int i, int j, int k) {
     double div = 0;
     for (int d = 0; d < dim; ++d) {
-      const core::Field& U = st_.volFlux[d];
-      div += (U(i + (d == 0), j + (d == 1), k + (d == 2)) - U(i, j, k)) / mesh_.dx(d);
+      const core::Field& U = st.volFlux[d];
+      div += (U(i + (d == 0), j + (d == 1), k + (d == 2)) - U(i, j, k)) / mesh.dx(d);
     }
-    st_.divU(i, j, k) = div;
+    st.divU(i, j, k) = div;
   });
 }
 
-void IceSolver::explicitIncrement() {
-  divergence();
-  forEach(owned_, [&](int i, int j, int k) {
+void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) {
+  forEach(owned, [&](int i, int j, int k) {
     double kbar = 0;
-    for (const MaterialState& m : st_.mat) kbar += m.theta(i, j, k) * m.kappa(i, j, k);
-    const double dp = kbar > 0 ? -dt_ * st_.divU(i, j, k) / kbar : 0.0;
-    st_.dp(i, j, k) = dp;
-    st_.press(i, j, k) = st_.pressEq(i, j, k) + dp;
+    for (const MaterialState& m : st.mat) kbar += m.theta(i, j, k) * m.kappa(i, j, k);
+    const double dp = kbar > 0 ? -dt * st.divU(i, j, k) / kbar : 0.0;
+    st.dp(i, j, k) = dp;
+    st.press(i, j, k) = st.pressEq(i, j, k) + dp;
   });
 }
 
 void IceSolver::computePressureIncrement() {
-  if (semiImplicit_) solveSemiImplicit();
-  else explicitIncrement();
+  if (semiImplicit_) {
+    solveSemiImplicit();
+  } else {
+    computeVolumeFluxes(st_, mesh_, owned_);
+    explicitPressureIncrement(st_, owned_, dt_);
+  }
   fillGhosts({{&st_.press, FieldKind::Pressure}}, {-1});
 }
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "ice/ice_constants.h"
+
 namespace mpmice::ice {
 
 using core::Field;
@@ -62,20 +64,20 @@ double IceSolver::stableTimeStep() const {
       const double th = m.theta.data()[c];
       kbar += th * m.kappa.data()[c];
       rho += m.mass.data()[c] / V;
-      if (th > 1e-6)
+      if (th > kPresentFraction)
         for (int d = 0; d < dim; ++d) umax[d] = std::max(umax[d], std::abs(m.vel.data(d)[c]));
     }
     const double cs = kbar > 0 && rho > 0 ? std::sqrt(1.0 / (rho * kbar)) : 0.0;
     double s = 0;
     for (int d = 0; d < dim; ++d)
-      s += (semiImplicit_ ? std::max(umax[d], 0.1 * cs) : umax[d] + cs) / mesh_.dx(d);
+      s += (semiImplicit_ ? std::max(umax[d], kSemiImplicitSoundShare * cs) : umax[d] + cs) / mesh_.dx(d);
     rate = std::max(rate, s);
   });
   rate = comm_.max(rate);
   double dt = rate > 0 ? cfl_ / rate : dtMax_;
   // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
   // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
-  // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > 1e-6).
+  // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > kPresentFraction).
   // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
   // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
   // while m / (theta V) stays the cell's real mass.
@@ -89,7 +91,7 @@ double IceSolver::stableTimeStep() const {
       const double* mass = m.mass.data();
       forEach(owned_, [&](int i, int j, int k) {
         const std::int64_t c = sb.index(i, j, k);
-        if (th[c] > 1e-6 && mass[c] > 0) nu = std::max(nu, m.viscosity * th[c] * V / mass[c]);
+        if (th[c] > kPresentFraction && mass[c] > 0) nu = std::max(nu, m.viscosity * th[c] * V / mass[c]);
       });
     }
     nu = comm_.max(nu);

@@ -25,6 +25,7 @@
 #include "core/parallel/ghost_exchange.h"
 #include "ice/pressure/equilibrium_pressure.h"
 #include "core/scene/scene.h"
+#include "ice/solver/scratch.h"
 #include "ice/state/ice_state.h"
 
 namespace mpmice::ice {
@@ -111,12 +112,11 @@ class IceSolver {
   void initialize(const core::Scene& scene);
   void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
   void fillMaterialGhosts(bool lagrangian);
+  /// Phase 5, semi-implicit: assemble (face mobilities, the stencil, the right-hand side), solve
+  /// for st_.dp (ice/linear), correct the face velocities.
   void solveSemiImplicit();
-  /// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure.
-  static constexpr double kMaxSolidFraction = 1.0 - 1e-9;
-  void explicitIncrement();
-  /// Face volume fluxes U_f (st_.volFlux) and their divergence (st_.divU) from the face velocities.
-  void divergence();
+  void assembleSemiImplicit();
+  void solvePressureSystem();
 
   core::Comm comm_;
   core::Mesh mesh_;
@@ -144,10 +144,9 @@ class IceSolver {
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0;
   std::array<InflowState, 6> inflow_{};
-  std::vector<std::vector<double>> acc_;  // advection accumulators (scratch)
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
-  std::vector<std::array<core::Field, 3>> faceFlux_;  // advection face fluxes per material (scratch)
-  core::Field outScale_;                  // positivity scale of each donor's outflow, per material
+  SemiImplicitScratch semi_;
+  AdvectionScratch adv_;
 };
 
 }  // namespace mpmice::ice

@@ -6,14 +6,12 @@
 
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
 
 namespace {
-
-/// Volume fraction of each fluid left in cells that a solid object covers.
-constexpr double kTraceFraction = 1e-10;
 
 std::string num(double v) {
   std::ostringstream os;
@@ -162,8 +160,8 @@ void IceSolver::initialize(const core::Scene& scene) {
   }
   for (int r = 0; r < nm; ++r)
     if (!st_.mat[r].external && !bg[r].set) {  // never placed: an absent material at 1 atm, 300 K
-      bg[r].rho = st_.mat[r].eos->densityFromPT(101325.0, 300.0);
-      bg[r].e = st_.mat[r].eos->energyFromTemperature(bg[r].rho, 300.0);
+      bg[r].rho = st_.mat[r].eos->densityFromPT(kReferencePressure, kReferenceTemperature);
+      bg[r].e = st_.mat[r].eos->energyFromTemperature(bg[r].rho, kReferenceTemperature);
       bg[r].set = bg[r].rho > 0;
     }
 
@@ -189,8 +187,8 @@ void IceSolver::initialize(const core::Scene& scene) {
       for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = reg ? reg->velocity[d] : 0.0;
       if (m.external) {
         m.mass(i, j, k) = 0;
-        m.spvol(i, j, k) = 1.0 / m.eos->densityFromPT(reg ? *reg->pressure : 101325.0, 300.0);
-        m.eint(i, j, k) = m.eos->cv() * 300.0;
+        m.spvol(i, j, k) = 1.0 / m.eos->densityFromPT(reg ? *reg->pressure : kReferencePressure, kReferenceTemperature);
+        m.eint(i, j, k) = m.eos->cv() * kReferenceTemperature;
         continue;
       }
       // A cell inside a solid still holds a trace of each fluid (volume fraction kTraceFraction at
@@ -208,7 +206,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       m.spvol(i, j, k) = 1.0 / rho;
       m.theta(i, j, k) = frac;
     }
-    st_.press(i, j, k) = reg ? *reg->pressure : fluidRegions.empty() ? 101325.0 : *fluidRegions.front()->pressure;
+    st_.press(i, j, k) = reg ? *reg->pressure : fluidRegions.empty() ? kReferencePressure : *fluidRegions.front()->pressure;
     initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 

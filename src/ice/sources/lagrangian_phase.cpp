@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -70,8 +71,8 @@ void IceSolver::computeSourcesAndLagrangian() {
       // takes most of the cell's volume change, so the linear update is capped at +-50% per step
       // (the next equilibrium pressure resets the volumes; capped cells are counted).
       double dvv = dt * f * div;
-      if (std::abs(dvv) > 0.5) {
-        dvv = dvv > 0 ? 0.5 : -0.5;
+      if (std::abs(dvv) > kMaxVolumeChange) {
+        dvv = dvv > 0 ? kMaxVolumeChange : -kMaxVolumeChange;
         ++fallbacks_;
       }
       const double de = -p * v * dvv;
@@ -85,7 +86,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       for (const Ptr& P : ptr) {
         const double e0 = P.eL[c];
         const double e1 = e0 + (P.ka[c] / kbar) * P.v[c] * D / V;
-        if (e0 > 0 && e1 < 0.1 * e0) ++fallbacks_;  // would drain the internal energy: keep e0
+        if (e0 > 0 && e1 < kMinEnergyShare * e0) ++fallbacks_;  // would drain the internal energy: keep e0
         else P.eL[c] = e1;
       }
     }

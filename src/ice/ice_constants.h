@@ -1,0 +1,56 @@
+#pragma once
+/// @brief The reference state and the regularisation constants of ICE, in one place.
+///
+/// Each value says which test fails if it changes (found by reading tests/; "no test pins it"
+/// where none asserts on it: the value is then kept for the results it gives, not for a test).
+/// The scene's own defaults (src/core/scene: a region's or an inflow's temperature, 300 K) are
+/// separate, and not taken from here.
+namespace mpmice::ice {
+
+// ---- reference state (absent fluids, external materials without a covering region, the
+// pressure of cells no fluid region covers)
+/// Reference pressure [Pa] (1 atm). No test pins it (the tests place every fluid and give
+/// external materials their state through setExternalMaterialState).
+inline constexpr double kReferencePressure = 101325.0;
+/// Reference temperature [K]. No test pins it (as kReferencePressure; ExternalSolidEos's
+/// internalEnergy, cv * T_ref, is never asked for by a test).
+inline constexpr double kReferenceTemperature = 300.0;
+
+// ---- regularisation: traces, caps and cut-offs
+/// Volume fraction of each fluid left in the cells a solid object of the scene covers at the
+/// start. No test pins it (only the mpmice integration tests have solid regions, and they
+/// compare runs that share the value).
+inline constexpr double kTraceFraction = 1e-10;
+/// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure
+/// (fill cap; fitFluidsToExternalVolume leaves the fluids 1 - kMaxSolidFraction of the cell).
+/// Pinned by IceExternal.OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolume (the
+/// solid's theta within 1e-6 of 1) and IceExchange.DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace
+/// ("air is a trace": m_air < 1e-8 m_steel).
+inline constexpr double kMaxSolidFraction = 1.0 - 1e-9;
+/// Material mass [kg] below which advection drops a material from a cell (small-mass cut-off).
+/// No test pins it.
+inline constexpr double kTraceMass = 1e-200;
+/// The largest share of its mass a donor cell may lose through all its faces in one advection
+/// step (positivity cap on the outflow). No test pins it.
+inline constexpr double kMaxOutflowFraction = 0.9;
+/// Advected velocities below this [m/s] are set to zero: upwind tails ahead of waves decay
+/// geometrically and would otherwise reach denormal numbers (two orders of magnitude slower).
+/// No test pins it.
+inline constexpr double kTinyVelocity = 1e-150;
+/// Volume fraction above which a material counts as present for the time step bounds (its speed
+/// in the CFL bound, its viscosity in the viscous bound). No test pins it (the IceTimeStep tests
+/// use cells one fluid fills).
+inline constexpr double kPresentFraction = 1e-6;
+/// The largest relative volume change |dt (kappa_r / kbar) div U| of a material in one
+/// Lagrangian step (cap; capped cells are counted as fallbacks). No test pins it.
+inline constexpr double kMaxVolumeChange = 0.5;
+/// An energy update that would leave less than this share of a cell's internal energy is not
+/// taken (advection falls back to the directly advected internal energy, the Lagrangian energy
+/// fix keeps e_L). No test pins it.
+inline constexpr double kMinEnergyShare = 0.1;
+/// The semi-implicit step's speed floor, as a share of the sound speed, in the CFL bound.
+/// No test pins it (the semi-implicit IceSod and IceWaterAir runs take the step it gives, but
+/// their error bounds do not single it out).
+inline constexpr double kSemiImplicitSoundShare = 0.1;
+
+}  // namespace mpmice::ice

@@ -1,0 +1,44 @@
+#pragma once
+/// @brief IceSolver's scratch between steps, by name: what the semi-implicit pressure solve
+/// (phase 5) and the advection (phase 12) keep so as not to allocate every step. Nothing in
+/// here is state: each phase overwrites what it reads before reading it.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/field/field.h"
+#include "ice/linear/jacobi_cg.h"
+#include "ice/linear/linear_operator.h"
+
+namespace mpmice::ice {
+
+/// Phase 5, semi-implicit: the face mobilities, the pressure-increment system and its solver.
+struct SemiImplicitScratch {
+  /// phi_r,f: the face velocity's response to a pressure gradient (-dt phi grad dp) per
+  /// material, on the faces normal to each direction.
+  std::vector<std::array<core::Field, 3>> mobility;
+  /// centre = kbar = sum_r theta_r kappa_r per cell, coef = dt^2 beta_f / dx^2 per face.
+  linear::FaceStencil stencil;
+  core::Field rhs;  // -dt div U* per owned cell
+  std::unique_ptr<linear::JacobiCg> cg;
+};
+
+/// The quantities the advection carries, as components of its accumulators and face fluxes.
+namespace advected {
+enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
+}
+
+/// Phase 12: per material the conserved amounts per cell and the face fluxes; the donors'
+/// positivity scale.
+struct AdvectionScratch {
+  struct Material {
+    /// Per stored cell: m, m u (3 components), m (e + |u|^2 / 2), m v, m e (advected::k*).
+    std::array<std::vector<double>, advected::kCount> conserved;
+    /// advected::kCount components per face normal to each direction.
+    std::array<core::Field, 3> faceFlux;
+  };
+  std::vector<Material> mat;
+  core::Field outflowScale;  // one component per material: scale of each donor's outflow
+};
+
+}  // namespace mpmice::ice

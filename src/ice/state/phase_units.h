@@ -1,0 +1,23 @@
+#pragma once
+/// @brief The small phase steps of ICE that need nothing but the state, the mesh and this rank's
+/// owned cells: IceSolver's phases call them (see ice/solver/ice_solver.h for the order).
+///
+/// Face fields live on the faces normal to each direction d < dim of the owned box (face index i
+/// = low face of cell i); cell fields over the stored box, read at the owned cells and their face
+/// neighbours (their ghosts must be filled).
+#include "core/mesh/mesh.h"
+#include "ice/state/ice_state.h"
+
+namespace mpmice::ice {
+
+/// Face volume fluxes U_f = sum_r theta_r u_f,r (theta from the upwind cell; st.volFlux) and
+/// their divergence per owned cell (st.divU).
+void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned);
+/// Explicit pressure increment dp = -dt div U / kbar (0 where kbar = 0; st.dp) and p = p_eq + dp
+/// per owned cell, from st.divU.
+void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
+/// Face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: the cells'
+/// mixture mass; the mean where both are empty; st.pressFace).
+void computeFacePressures(IceState& st, const core::Box& owned, int dim);
+
+}  // namespace mpmice::ice
