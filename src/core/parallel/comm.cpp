@@ -7,31 +7,20 @@ Comm::Comm(MPI_Comm c) : comm_(c) {
   MPI_Comm_size(c, &size_);
 }
 
-double Comm::sum(double v) const {
-  double r = 0;
-  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_SUM, comm_);
+namespace {
+template <class T>
+T allReduce(T v, MPI_Datatype type, MPI_Op op, MPI_Comm comm) {
+  T r{};
+  MPI_Allreduce(&v, &r, 1, type, op, comm);
   return r;
 }
-double Comm::max(double v) const {
-  double r = 0;
-  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  return r;
-}
-double Comm::min(double v) const {
-  double r = 0;
-  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, comm_);
-  return r;
-}
-long long Comm::sum(long long v) const {
-  long long r = 0;
-  MPI_Allreduce(&v, &r, 1, MPI_LONG_LONG, MPI_SUM, comm_);
-  return r;
-}
-int Comm::max(int v) const {
-  int r = 0;
-  MPI_Allreduce(&v, &r, 1, MPI_INT, MPI_MAX, comm_);
-  return r;
-}
+}  // namespace
+
+double Comm::sum(double v) const { return allReduce(v, MPI_DOUBLE, MPI_SUM, comm_); }
+double Comm::max(double v) const { return allReduce(v, MPI_DOUBLE, MPI_MAX, comm_); }
+double Comm::min(double v) const { return allReduce(v, MPI_DOUBLE, MPI_MIN, comm_); }
+long long Comm::sum(long long v) const { return allReduce(v, MPI_LONG_LONG, MPI_SUM, comm_); }
+int Comm::max(int v) const { return allReduce(v, MPI_INT, MPI_MAX, comm_); }
 void Comm::sumInPlace(std::vector<double>& v) const {
   MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm_);
 }
