@@ -17,6 +17,7 @@
 #include "core/scene/scene.h"
 #include "coupler/launch/participant.h"
 #include "couplings/volume/fluid/fluid_participant.h"
+#include "core/health/health.h"
 #include "ice/solver/standalone_run.h"
 
 using namespace mpmice;
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
     return ice::runStandalone(scene, participant.local(), std::cout);  // 2.
   } catch (const core::SceneError& e) {
     if (session.world().root()) std::cerr << e.what() << "\n";
+    return 1;
+  } catch (const core::HealthError& e) {  // every rank (of both programs, coupled) throws it: one prints
+    if (e.reporter()) std::cerr << "ice_solver: error: " << e.what() << std::endl;
     return 1;
   } catch (const std::invalid_argument& e) {  // bad input: every rank throws the same
     if (session.world().root()) std::cerr << "ice_solver: error: " << e.what() << "\n";

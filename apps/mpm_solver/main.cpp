@@ -17,6 +17,7 @@
 #include "coupler/launch/participant.h"
 #include "couplings/volume/solid/solid_participant.h"
 #include "couplings/surface/solid/surface_solid_participant.h"
+#include "core/health/health.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
 #include "mpm/solver/standalone_run.h"
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {
           return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
+        } catch (const core::HealthError& ex) {  // only this side knows: end the launch
+          if (ex.reporter()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+          std::fflush(stderr);
+          core::MpiSession::abortAll(1);
         } catch (const std::invalid_argument& ex) {  // only this side knows (e.g. the fluid's case disagrees)
           std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
           std::fflush(stderr);
@@ -48,6 +53,9 @@ int main(int argc, char** argv) {
     return mpm::runStandalone(scene, participant.local(), std::cout);  // 2.
   } catch (const core::SceneError& ex) {
     if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
+    return 1;
+  } catch (const core::HealthError& ex) {  // every rank (of both programs, coupled) throws it: one prints
+    if (ex.reporter()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
     return 1;
   } catch (const std::invalid_argument& ex) {  // bad input: every rank throws the same
     if (session.world().root()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());

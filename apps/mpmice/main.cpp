@@ -9,6 +9,7 @@
 //    decomposition, the scene's coupling schedule, output at each output time.
 #include <iostream>
 
+#include "core/health/health.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
 #include "couplings/volume/monolithic/monolithic_run.h"
@@ -28,6 +29,9 @@ int main(int argc, char** argv) {
   } catch (const core::SceneError& e) {
     if (comm.root()) std::cerr << e.what() << "\n";
     return 2;
+  } catch (const core::HealthError& e) {  // every rank throws it: one prints, all end 1
+    if (e.reporter()) std::cerr << "mpmice: error: " << e.what() << std::endl;
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "mpmice: " << e.what() << "\n";
     core::MpiSession::abortAll(1);

@@ -1,6 +1,7 @@
 // Whole-step MPM throughput (Google Benchmark): one uncoupled MpmSolver::advance() (USL, FLIP,
 // linear elastic) per iteration, for each shape function in 2D and 3D, on one core. The counter
-// particle_steps is particles x steps per second (kIsRate).
+// particle_steps is particles x steps per second (kIsRate). Each case also runs with the health
+// check every program's loop calls after each step (".../health_check"): the difference is its cost.
 //
 // Sample run (the figures of docs/mpm.md, Performance):
 //   build-mpm/benchmarks/mpm/bench_mpm_step --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -15,6 +16,7 @@
 #include <numbers>
 #include <string>
 
+#include "mpm/solver/health_check.h"
 #include "mpm_problems.h"
 
 using namespace mpmice;
@@ -55,13 +57,14 @@ void initVelocity(mpm::MpmSolver& solver, int dim) {
     }
 }
 
-void BM_MpmStep(benchmark::State& state, int dim, const std::string& shape) {
+void BM_MpmStep(benchmark::State& state, int dim, const std::string& shape, bool health) {
   mpm::MpmSolver solver(blockScene(dim, shape), core::Comm(MPI_COMM_SELF));
   initVelocity(solver, dim);
   for (int k = 0; k < 2; ++k) solver.advance();  // warm-up: first touch of every field
   const auto np = static_cast<double>(solver.globalParticleCount());
   for (auto _ : state) {
     solver.advance();
+    if (health) mpm::checkHealth(solver);  // what every program's loop adds per step
     benchmark::ClobberMemory();
   }
   state.counters["particle_steps"] =
@@ -75,10 +78,12 @@ int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   for (int dim : {2, 3})
     for (const char* shape : {"linear", "gimp", "bspline2", "bspline3"})
-      benchmark::RegisterBenchmark(("MpmStep/" + std::to_string(dim) + "D/" + shape).c_str(),
-                                   [dim, s = std::string(shape)](benchmark::State& st) { BM_MpmStep(st, dim, s); })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+      for (const bool health : {false, true})
+        benchmark::RegisterBenchmark(
+            ("MpmStep/" + std::to_string(dim) + "D/" + shape + (health ? "/health_check" : "")).c_str(),
+            [dim, s = std::string(shape), health](benchmark::State& st) { BM_MpmStep(st, dim, s, health); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

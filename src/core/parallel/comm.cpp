@@ -26,4 +26,14 @@ void Comm::sumInPlace(std::vector<double>& v) const {
 }
 void Comm::barrier() const { MPI_Barrier(comm_); }
 
+std::string Comm::firstMessage(const std::string& mine) const {
+  const int owner = size_ - max(mine.empty() ? 0 : size_ - rank_);  // size_: nobody has one
+  if (owner == size_) return "";
+  int n = rank_ == owner ? static_cast<int>(mine.size()) : 0;
+  MPI_Bcast(&n, 1, MPI_INT, owner, comm_);
+  std::string s = rank_ == owner ? mine : std::string(static_cast<std::size_t>(n), ' ');
+  MPI_Bcast(s.data(), n, MPI_CHAR, owner, comm_);
+  return s;
+}
+
 }  // namespace mpmice::core

@@ -28,6 +28,9 @@ class Comm {
   /// Elementwise sum of a vector over all ranks (in place).
   void sumInPlace(std::vector<double>& v) const;
   void barrier() const;
+  /// The message of the lowest rank whose `mine` is not empty, on every rank ("" when every
+  /// rank's is empty: then one integer reduction and nothing else). Collective.
+  [[nodiscard]] std::string firstMessage(const std::string& mine) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;

@@ -302,7 +302,8 @@ std::string dumpScene(const Scene& s) {
   mesh(o, s.mesh);
   const TimeSpec& t = s.time;
   o << "time:\n  end: " << num(t.end) << "\n  cfl: " << num(t.cfl) << "\n  dt_max: " << num(t.dt_max)
-    << "\n  dt_min: " << num(t.dt_min) << "\n  dt_initial: " << num(t.dt_initial) << "\n  max_steps: " << t.max_steps
+    << "\n  dt_min: " << num(t.dt_min) << "\n  dt_initial: " << num(t.dt_initial)
+    << "\n  dt_collapse_fraction: " << num(t.dt_collapse_fraction) << "\n  max_steps: " << t.max_steps
     << "\n";
   o << "gravity: " << vec(s.gravity, dim) << "\n";
   materials(o, s);

@@ -140,13 +140,15 @@ class SchemaReader {
   // ------------------------------------------------------------------------------------ time
   void readTime(const YamlValue& v) {
     const YamlMap m = v.map();
-    m.allow({"end", "cfl", "dt_max", "dt_min", "dt_initial", "max_steps"});
+    m.allow({"end", "cfl", "dt_max", "dt_min", "dt_initial", "dt_collapse_fraction", "max_steps"});
     TimeSpec& t = s_.time;
     t.end = m.number("end", Range::positive());                                  // end time [s]
     t.cfl = m.number("cfl", t.cfl, Range::openClosed(0, 1));                     // CFL number
     t.dt_max = m.number("dt_max", t.dt_max, Range::positive());                  // largest step [s]
     t.dt_min = m.number("dt_min", t.dt_min, Range::nonNegative());               // smallest step [s]
     t.dt_initial = m.number("dt_initial", t.dt_initial, Range::nonNegative());   // 0 = from CFL
+    // A stable step below this fraction of the first one stops the run (0 = off).
+    t.dt_collapse_fraction = m.number("dt_collapse_fraction", t.dt_collapse_fraction, Range{0.0, 1.0, false, true});
     t.max_steps = m.integer("max_steps", t.max_steps, 0);                        // 0 = no limit
     if (t.dt_min > t.dt_max)
       m.required("dt_min").fail("dt_min " + str(t.dt_min) + " exceeds dt_max " + str(t.dt_max));

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
+#include "core/health/health.h"
 #include "ice/ice_constants.h"
 
 namespace mpmice::ice {
@@ -49,12 +51,15 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
   fillGhosts(fs, mats);
 }
 
-double IceSolver::stableTimeStep() const {
+double IceSolver::stableTimeStep() const { return stableTimeStep(nullptr); }
+
+double IceSolver::stableTimeStep(StepBound* where) const {
   const int dim = mesh_.dim();
   const double V = mesh_.cellVolume();
   double rate = 0;  // max over cells of sum_d (|u_d| + c) / dx_d
   const int nm = numMaterials();
   const core::Box& sb = st_.press.box();
+  std::int64_t rateCell = -1;
   forEach(owned_, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
     double kbar = 0, rho = 0;
@@ -71,8 +76,12 @@ double IceSolver::stableTimeStep() const {
     double s = 0;
     for (int d = 0; d < dim; ++d)
       s += (semiImplicit_ ? std::max(umax[d], kSemiImplicitSoundShare * cs) : umax[d] + cs) / mesh_.dx(d);
-    rate = std::max(rate, s);
+    if (s > rate) {
+      rate = s;
+      rateCell = c;
+    }
   });
+  const double localRate = rate;
   rate = comm_.max(rate);
   double dt = rate > 0 ? cfl_ / rate : dtMax_;
   // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
@@ -81,28 +90,92 @@ double IceSolver::stableTimeStep() const {
   // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
   // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
   // while m / (theta V) stays the cell's real mass.
+  double nu = 0, localNu = 0;
+  std::int64_t nuCell = -1;
+  int nuMaterial = -1;
+  bool viscous = false;
   if (anyViscous_) {
     double inv2 = 0;
     for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
-    double nu = 0;
-    for (const MaterialState& m : st_.mat) {
+    for (int r = 0; r < nm; ++r) {
+      const MaterialState& m = st_.mat[r];
       if (m.external || !(m.viscosity > 0)) continue;
       const double* th = m.theta.data();
       const double* mass = m.mass.data();
       forEach(owned_, [&](int i, int j, int k) {
         const std::int64_t c = sb.index(i, j, k);
-        if (th[c] > kPresentFraction && mass[c] > 0) nu = std::max(nu, m.viscosity * th[c] * V / mass[c]);
+        if (th[c] > kPresentFraction && mass[c] > 0 && m.viscosity * th[c] * V / mass[c] > localNu) {
+          localNu = m.viscosity * th[c] * V / mass[c];
+          nuCell = c;
+          nuMaterial = r;
+        }
       });
     }
-    nu = comm_.max(nu);
-    if (nu > 0) dt = std::min(dt, 1.0 / (2.0 * nu * inv2));
+    nu = comm_.max(localNu);
+    if (nu > 0 && 1.0 / (2.0 * nu * inv2) < dt) {
+      dt = 1.0 / (2.0 * nu * inv2);
+      viscous = true;
+    }
+  }
+  if (where) {
+    *where = {};
+    if (viscous) {
+      where->limit = "the ICE explicit viscous bound 1 / (2 nu sum_d dx_d^-2)";
+      where->here = localNu == nu;
+      where->cell = nuCell;
+      where->material = nuMaterial;
+      where->value = nu;
+    } else if (rate > 0 && cfl_ / rate < dtMax_) {
+      where->limit = semiImplicit_ ? "the ICE CFL bound (convective, sound speed share)"
+                                   : "the ICE CFL bound (convective + acoustic)";
+      where->here = localRate == rate;
+      where->cell = rateCell;
+      where->value = rate;
+    } else {
+      where->limit = "time.dt_max";  // no cell
+    }
   }
   return dt;
+}
+
+std::string IceSolver::stableTimeStepLimit() const {
+  StepBound b;
+  const double dt = stableTimeStep(&b);
+  std::ostringstream os;
+  os.precision(6);
+  os << b.limit << " (dt " << dt << " s)";
+  if (b.cell < 0) return comm_.firstMessage(comm_.root() ? os.str() : "");  // time.dt_max: no cell
+  if (!b.here) return comm_.firstMessage("");  // another rank holds the limiting cell
+  const core::Box& sb = st_.press.box();
+  const std::int64_t nx = sb.length(0), ny = sb.length(1);
+  const int ijk[3] = {static_cast<int>(b.cell % nx) + sb.lo[0], static_cast<int>((b.cell / nx) % ny) + sb.lo[1],
+                      static_cast<int>(b.cell / (nx * ny)) + sb.lo[2]};
+  double x[3];
+  for (int d = 0; d < 3; ++d) x[d] = mesh_.cellCenter(d, ijk[d]);
+  os << " in cell (" << ijk[0] << "," << ijk[1] << "," << ijk[2] << ") at x = " << core::formatPoint(x, mesh_.dim())
+     << " m";
+  if (b.material >= 0) {
+    os << ", fluid '" << st_.mat[b.material].name << "', nu = " << b.value << " m^2/s";
+  } else {
+    os << ", sum_d (|u_d| + c) / dx_d = " << b.value << " 1/s; materials:";
+    const double V = mesh_.cellVolume();
+    const std::int64_t c = b.cell;
+    for (const MaterialState& m : st_.mat) {
+      double u = 0;
+      for (int d = 0; d < 3; ++d) u += m.vel.data(d)[c] * m.vel.data(d)[c];
+      os << " '" << m.name << "' (theta " << m.theta.data()[c] << ", density " << m.mass.data()[c] / V
+         << " kg/m^3, |u| " << std::sqrt(u) << " m/s, c " << std::sqrt(m.spvol.data()[c] / m.kappa.data()[c])
+         << " m/s)";
+    }
+  }
+  return comm_.firstMessage(os.str());
 }
 
 void IceSolver::step() {
   computeEquilibriumPressure();
   double dt = std::min(stableTimeStep(), dtMax_);
+  if (collapse_.collapsed(dt))
+    throw core::HealthError(collapse_.message(dt, t_, nsteps_ + 1, stableTimeStepLimit()), comm_.root());
   if (dt < dtMin_)
     throw std::runtime_error("ice: the stable time step " + std::to_string(dt) + " s at t = " + std::to_string(t_) +
                              " s fell below time.dt_min = " + std::to_string(dtMin_) + " s");

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "ice/boundary/ice_boundary.h"
+#include "core/health/health.h"
 #include "core/parallel/comm.h"
 #include "core/parallel/decomposition.h"
 #include "core/parallel/ghost_exchange.h"
@@ -48,6 +49,9 @@ class IceSolver {
   /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
   /// and with viscous fluids also the explicit viscous bound 1 / (2 nu sum_d dx_d^-2), nu = mu / rho.
   [[nodiscard]] double stableTimeStep() const;
+  /// What sets the stable step now: the bound (CFL, viscous, time.dt_max), the cell, its centre
+  /// and the materials' state there, for the time-step collapse error. Collective.
+  [[nodiscard]] std::string stableTimeStepLimit() const;
   [[nodiscard]] double time() const { return t_; }
   [[nodiscard]] long steps() const { return nsteps_; }
   [[nodiscard]] double dt() const { return dt_; }
@@ -110,6 +114,16 @@ class IceSolver {
 
  private:
   void initialize(const core::Scene& scene);
+  /// The bound that sets the stable step (stableTimeStepLimit): on this rank, the cell (stored-box
+  /// index) and the value of the bound there when `here`.
+  struct StepBound {
+    const char* limit = "";
+    bool here = false;
+    std::int64_t cell = -1;
+    int material = -1;
+    double value = 0;
+  };
+  double stableTimeStep(StepBound* where) const;
   void fillGhosts(const std::vector<std::pair<core::Field*, FieldKind>>& fields, const std::vector<int>& mats);
   void fillMaterialGhosts(bool lagrangian);
   /// Phase 5, semi-implicit: assemble (face mobilities, the stencil, the right-hand side), solve
@@ -141,6 +155,7 @@ class IceSolver {
     std::vector<std::int64_t> cells;
   };
   std::vector<Source> sources_;
+  core::StepCollapse collapse_{0.0};  // time.dt_collapse_fraction (step())
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0;
   std::array<InflowState, 6> inflow_{};

@@ -65,6 +65,7 @@ void IceSolver::initialize(const core::Scene& scene) {
   tEnd_ = scene.time.end;
   dtMax_ = scene.time.dt_max;
   dtMin_ = scene.time.dt_min;
+  collapse_ = core::StepCollapse(scene.time.dt_collapse_fraction);
   gravity_ = scene.gravity;
   anyGravity_ = gravity_[0] != 0 || gravity_[1] != 0 || gravity_[2] != 0;
 

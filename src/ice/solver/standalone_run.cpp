@@ -7,6 +7,7 @@
 #include "core/io/output_writer.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
+#include "ice/solver/health_check.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -49,6 +50,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (outputs.due(0.0)) output();
   while (core::goesOn(solver.time(), solver.steps(), scene.time.end, scene.time.max_steps)) {
     solver.step();
+    checkHealth(solver);  // collective: every rank stops on a non-physical state
     double maxIt = 0;
     const auto& it = solver.state().iters;
     core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/health/health.h"
 #include "mpm/solver/kernels.h"
 
 namespace mpmice::mpm {
@@ -25,7 +26,7 @@ std::string num(double v) {
 }  // namespace
 
 MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsFn contains)
-    : scene_(scene), comm_(comm) {
+    : scene_(scene), comm_(comm), collapse_(scene.time.dt_collapse_fraction) {
   const core::Mesh& mesh = scene_.mesh;
   // 1. Options, each checked with the scene key it came from.
   if (!(scene_.time.cfl > 0 && scene_.time.cfl <= 1.0))
@@ -94,29 +95,63 @@ long long MpmSolver::globalParticleCount() const {
   return comm_.sum(static_cast<long long>(p_.size()));
 }
 
-double MpmSolver::stableTimeStep() const {
+double MpmSolver::stableTimeStep() const { return stableTimeStep(nullptr); }
+
+double MpmSolver::stableTimeStep(std::size_t* limiting) const {
   const core::Mesh& mesh = scene_.mesh;
   double dxMin = 1e300;
   for (int d = 0; d < mesh.dim(); ++d) dxMin = std::min(dxMin, mesh.dx(d));
   double cmax = 0;
+  std::size_t arg = p_.size();
   for (std::size_t m = 0; m < models_.size(); ++m) {
     if (!models_[m]) continue;
     const auto [b, e] = p_.materialRange(static_cast<int>(m));
     for (std::size_t i = b; i < e; ++i) {
       double v2 = 0;
       for (int d = 0; d < mesh.dim(); ++d) v2 += p_.v[d][i] * p_.v[d][i];
-      cmax = std::max(cmax, models_[m]->waveSpeed(p_.mass[i] / p_.vol[i]) + std::sqrt(v2));
+      const double s = models_[m]->waveSpeed(p_.mass[i] / p_.vol[i]) + std::sqrt(v2);
+      if (s > cmax) {
+        cmax = s;
+        arg = i;
+      }
     }
   }
+  const double local = cmax;
   cmax = comm_.max(cmax);
+  if (limiting) *limiting = local == cmax && cmax > 0 ? arg : p_.size();
   double dt = cmax > 0 ? scene_.time.cfl * dxMin / cmax : scene_.time.dt_max;
   dt = std::min(dt, scene_.time.dt_max);
   if (step_ == 0 && scene_.time.dt_initial > 0) dt = std::min(dt, scene_.time.dt_initial);
   return dt;
 }
 
+std::string MpmSolver::stableTimeStepLimit() const {
+  std::size_t i = 0;
+  const double dt = stableTimeStep(&i);
+  const core::Mesh& mesh = scene_.mesh;
+  std::ostringstream os;
+  os.precision(6);
+  const bool cfl = dt < scene_.time.dt_max && !(step_ == 0 && dt == scene_.time.dt_initial);
+  if (!cfl) {
+    os << (step_ == 0 && dt == scene_.time.dt_initial ? "time.dt_initial" : "time.dt_max") << " (dt " << dt << " s)";
+    return comm_.firstMessage(comm_.root() ? os.str() : "");
+  }
+  if (i >= p_.size()) return comm_.firstMessage("");  // another rank holds the particle
+  const int m = p_.material[i];
+  double x[3], v2 = 0;
+  for (int d = 0; d < 3; ++d) x[d] = p_.x[d][i];
+  for (int d = 0; d < mesh.dim(); ++d) v2 += p_.v[d][i] * p_.v[d][i];
+  os << "the MPM CFL bound cfl dx_min / (c + |v|) (dt " << dt << " s) at particle " << p_.id[i] << " of solid '"
+     << scene_.materials[static_cast<std::size_t>(m)].name << "' at x = " << core::formatPoint(x, mesh.dim())
+     << " m: wave speed c = " << models_[static_cast<std::size_t>(m)]->waveSpeed(p_.mass[i] / p_.vol[i])
+     << " m/s, |v| = " << std::sqrt(v2) << " m/s, density " << p_.mass[i] / p_.vol[i] << " kg/m^3";
+  return comm_.firstMessage(os.str());
+}
+
 double MpmSolver::advance(double until) {
   double dt = stableTimeStep();
+  if (collapse_.collapsed(dt))
+    throw core::HealthError(collapse_.message(dt, time_, step_ + 1, stableTimeStepLimit()), comm_.root());
   if (time_ + dt > until) dt = until - time_;
   beginStep(dt);
   particlesToGrid();

@@ -14,8 +14,10 @@
 /// An uncoupled step (advance()) is these phases in order with no external contributions.
 /// Collective calls (all ranks): constructor, stableTimeStep, every phase, energies.
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "core/health/health.h"
 #include "mpm/cell/node_cell_operators.h"
 #include "mpm/grid/boundary_conditions.h"
 #include "mpm/grid/grid.h"
@@ -70,6 +72,9 @@ class MpmSolver {
 
   /// The CFL time step: cfl * dx_min / max(c + |v|) over all particles, capped by dt_max.
   [[nodiscard]] double stableTimeStep() const;
+  /// What sets the stable step now: the particle (id, material, position, wave speed, |v|) of the
+  /// CFL bound, or time.dt_max / time.dt_initial; for the time-step collapse error. Collective.
+  [[nodiscard]] std::string stableTimeStepLimit() const;
   /// One uncoupled step with dt = min(stableTimeStep, time left to `until`). Returns dt.
   double advance(double until = 1e300);
   /// Node mass and velocity v_n from the particles as they are now (what particlesToGrid() gives),
@@ -123,6 +128,8 @@ class MpmSolver {
   [[nodiscard]] core::RealVect centerOfMassVelocity() const;
 
  private:
+  /// stableTimeStep; `limiting`: this rank's particle that sets the CFL bound (size(): none here).
+  double stableTimeStep(std::size_t* limiting) const;
   void computeLoads();
   void assignArcAreas(int load);
   void updateDeformationAndStress();
@@ -142,6 +149,7 @@ class MpmSolver {
   double flip_, damping_;
   double dt_ = 0, time_ = 0;
   long step_ = 0;
+  core::StepCollapse collapse_;  // time.dt_collapse_fraction (advance())
   double massFloor_ = 0;
   bool surfaceForces_ = false;
   double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_

@@ -5,6 +5,7 @@
 #include "core/io/csv_writer.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
+#include "mpm/solver/health_check.h"
 #include "mpm/solver/mpm_output.h"
 #include "mpm/solver/mpm_solver.h"
 #include "mpm/solver/probes.h"
@@ -45,6 +46,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (probes) probes->record(solver);
   while (core::goesOn(solver.time(), solver.stepCount(), scene.time.end, scene.time.max_steps)) {
     const double dt = solver.advance(outputs.landingTarget(solver.time(), solver.stableTimeStep()));
+    checkHealth(solver);  // collective: every rank stops on a non-physical state
     if (probes) probes->record(solver);
     if (outputs.due(solver.time())) write();
     progress.step(static_cast<int>(solver.stepCount()), solver.time(), dt, {},

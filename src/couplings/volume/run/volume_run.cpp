@@ -7,17 +7,35 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/health/health.h"
 #include "core/io/csv_writer.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
 #include "couplings/volume/common/run_output.h"
 #include "couplings/volume/schedule/coupling_schedule.h"
+#include "ice/solver/health_check.h"
+#include "mpm/solver/health_check.h"
 #include "mpm/solver/probes.h"
 
 namespace mpmice::coupler {
 
 namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// The health check of each side present (collective); in an MPMD launch the two programs trade
+// their verdicts, so both stop together (the side that found the violation names it).
+void checkHealth(const Sides& sides, Transport& transport, const core::Comm& comm, const std::string& label,
+                 bool mpmd) {
+  std::string bad;
+  if (sides.solid) bad = mpm::findViolation(sides.solid->solver());
+  if (bad.empty() && sides.fluid) bad = ice::findViolation(sides.fluid->solver());
+  bad = comm.firstMessage(bad);
+  const bool peerBad = mpmd && transport.trade({bad.empty() ? 0.0 : 1.0}, "health")[0] != 0.0;
+  if (!bad.empty()) throw core::HealthError(mpmd ? label + ": " + bad : bad, comm.root());
+  if (peerBad)
+    throw core::HealthError(label + ": stopped: the peer program found a non-physical state (its message names it)",
+                            comm.root());
+}
 }  // namespace
 
 int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& transport, const core::Comm& comm,
@@ -62,6 +80,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
 
   // 1. Start.
   startCoupling(sides, transport);
+  core::StepCollapse collapse(scene.time.dt_collapse_fraction);
   double t = 0;
   long n = 0, iterations = 0, unconverged = 0;
   double computeTotal = 0;
@@ -76,11 +95,24 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     const bool more = core::goesOn(t, n, scene.time.end, scene.time.max_steps);
     if (!(transport.trade({more ? 1.0 : 0.0}, "go on")[0] != 0.0 && more)) break;
     const double wall0 = now(), exchange0 = transport.seconds();
-    double mine = std::numeric_limits<double>::infinity();
-    if (sides.solid) mine = std::min(mine, sides.solid->stableTimeStep());
-    if (sides.fluid) mine = std::min(mine, sides.fluid->stableTimeStep());
+    const double inf = std::numeric_limits<double>::infinity();
+    const double solidStep = sides.solid ? sides.solid->stableTimeStep() : inf;
+    const double fluidStep = sides.fluid ? sides.fluid->stableTimeStep() : inf;
+    const double mine = std::min(solidStep, fluidStep);
     const double theirs = transport.trade({mine}, "time step")[0];
-    const double dt = core::landOn(t, std::min({mine, theirs, scene.time.dt_max}), scene.time.end);
+    const double stable = std::min({mine, theirs, scene.time.dt_max});
+    if (collapse.collapsed(stable)) {  // the same verdict on both sides: every rank of both throws
+      std::string limit = "the peer program's stable step (its own message names the cell or particle)";
+      if (stable == scene.time.dt_max)
+        limit = "time.dt_max";
+      else if (solidStep == stable)
+        limit = sides.solid->solver().stableTimeStepLimit();
+      else if (fluidStep == stable)
+        limit = sides.fluid->solver().stableTimeStepLimit();
+      const std::string what = collapse.message(stable, t, n + 1, limit);
+      throw core::HealthError(both ? what : label + ": " + what, comm.root());
+    }
+    const double dt = core::landOn(t, stable, scene.time.end);
     if (scene.time.dt_min > 0 && dt < scene.time.dt_min) {
       std::ostringstream os;
       os << label << ": time step " << dt << " s at t = " << t << " s (step " << n + 1
@@ -91,6 +123,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     t += dt;
     ++n;
     if (afterStep) afterStep(n);
+    checkHealth(sides, transport, comm, label, !both);
     const double exchange = transport.seconds() - exchange0, compute = now() - wall0 - exchange;
     computeTotal += compute;
     iterations += r.iterations;

@@ -1,0 +1,19 @@
+#pragma once
+/// @brief The health check of MPM, once per step in every program (docs/mpm.md "Health check").
+///
+/// Over this rank's particles: position, velocity and stress finite; mass and volume finite and
+/// > 0; temperature in (0, kMaxTemperature]; the material's wave speed at the particle's density
+/// in (0, kMaxSoundSpeed). The first violation found is named: quantity, material, particle id,
+/// position, time.
+#include <string>
+
+#include "mpm/solver/mpm_solver.h"
+
+namespace mpmice::mpm {
+
+/// The first violation among this rank's particles, "" when there is none. Local.
+[[nodiscard]] std::string findViolation(const MpmSolver& solver);
+/// Throws core::HealthError on every rank when any rank finds a violation. Collective.
+void checkHealth(const MpmSolver& solver);
+
+}  // namespace mpmice::mpm
