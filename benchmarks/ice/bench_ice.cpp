@@ -61,8 +61,18 @@ void BM_Box2D(benchmark::State& st) {
   st.counters["materials"] = nm;
 }
 
+// The health check alone, on the 2D box after 5 steps (its cost against BM_Box2D's step).
+void BM_HealthCheck2D(benchmark::State& st) {
+  const int nm = static_cast<int>(st.range(0));
+  ice::IceSolver s(mixtureBox(nm, 128), core::Comm(MPI_COMM_SELF));
+  for (int i = 0; i < 5; ++i) s.step();
+  for (auto _ : st) ice::checkHealth(s);
+  st.counters["materials"] = nm;
+}
+
 }  // namespace
 
+BENCHMARK(BM_HealthCheck2D)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Sod1D)->Args({10000, 0})->Args({10000, 1})->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_Box2D)
     ->Args({1, 0})
