@@ -15,18 +15,7 @@ namespace {
 core::Comm self() { return core::Comm(MPI_COMM_SELF); }
 
 
-core::Scene blockScene() {
-  core::Scene s;
-  s.mesh = core::Mesh(2, {0, 0, 0}, {0.25, 0.25, 1}, {8, 8, 1});
-  for (auto& f : s.boundary) f.type = core::BoundaryType::NoSlipWall;
-  s.materials = {pr::solid("block", 1000, pr::elastic("linear_elastic", 1e6, 0.25))};
-  core::ShapeSpec box;
-  box.type = "box";
-  box.lo = {0.5, 0.5, 0};
-  box.hi = {1.5, 1.0, 0};
-  s.geometry = {pr::region("block", box, "block", {2, 3, 1})};
-  return s;
-}
+core::Scene blockScene() { return pr::smallBlock(); }
 
 std::string errorOf(const core::Scene& s) {
   try {

@@ -53,6 +53,10 @@ std::vector<BadScene> badScenes() {
         "valid: j2_plasticity, linear_elastic, neo_hookean"}},
       {"CFL above one", kMesh + "time: {end: 1, cfl: 1.5}\n" + kAir + kRegion,
        {"test.yaml:2:", "time.cfl: 1.5 is out of range; expected a number in (0, 1]"}},
+      {"collapse fraction of one", kMesh + "time: {end: 1, dt_collapse_fraction: 1}\n" + kAir + kRegion,
+       {"test.yaml:2:", "time.dt_collapse_fraction: 1 is out of range; expected a number in [0, 1)"}},
+      {"negative collapse fraction", kMesh + "time: {end: 1, dt_collapse_fraction: -1e-6}\n" + kAir + kRegion,
+       {"time.dt_collapse_fraction: -1e-6 is out of range; expected a number in [0, 1)"}},
       {"zero density of a solid",
        kMesh2 + kTime +
            "materials:\n  - {name: steel, kind: solid, density: 0, model: {type: linear_elastic, "

@@ -185,6 +185,15 @@ TEST(SceneParse, DefaultsAreFilledIn) {
   EXPECT_TRUE(s.solids().empty());
 }
 
+TEST(SceneParse, TheCollapseFractionDefaultsToOneMillionthAndIsRead) {
+  EXPECT_DOUBLE_EQ(parseScene(kMinimal, "configs/minimal.yaml").time.dt_collapse_fraction, 1e-6);
+  std::string off = kMinimal;
+  const std::string t = "time: {end: 0.5}";
+  ASSERT_NE(off.find(t), std::string::npos);
+  off.replace(off.find(t), t.size(), "time: {end: 0.5, dt_collapse_fraction: 0}");
+  EXPECT_EQ(parseScene(off, "configs/minimal.yaml").time.dt_collapse_fraction, 0.0);
+}
+
 TEST(SceneParse, SolidDefaultsAndBulkShearConversion) {
   const Scene s = parseScene(kSolid2D, "cyl.yaml");
   EXPECT_EQ(s.mesh.cells()[0], 48);

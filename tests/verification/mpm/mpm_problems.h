@@ -52,6 +52,21 @@ struct Bar {
   [[nodiscard]] double vcm(double t) const { return 2 * v0 / std::numbers::pi * std::cos(omega() * t); }
 };
 
+/// A small elastic block (1000 kg/m^3, E 1 MPa) at rest in an 8 x 8 box of no-slip walls, 2 x 3
+/// particles per cell (the unit tests' solver).
+inline core::Scene smallBlock() {
+  core::Scene s;
+  s.mesh = core::Mesh(2, {0, 0, 0}, {0.25, 0.25, 1}, {8, 8, 1});
+  for (auto& f : s.boundary) f.type = core::BoundaryType::NoSlipWall;
+  s.materials = {solid("block", 1000, elastic("linear_elastic", 1e6, 0.25))};
+  core::ShapeSpec box;
+  box.type = "box";
+  box.lo = {0.5, 0.5, 0};
+  box.hi = {1.5, 1.0, 0};
+  s.geometry = {region("block", box, "block", {2, 3, 1})};
+  return s;
+}
+
 /// Bar of `cells` cells along its length (2 more cells of free space beyond x = L), one cell
 /// across with roller sides; dim 2 or 3.
 inline core::Scene barScene(int cells, const std::string& shape, const std::string& update = "usl",

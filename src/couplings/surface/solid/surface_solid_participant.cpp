@@ -11,6 +11,7 @@
 #include "coupler/iteration/implicit_iteration.h"
 #include "core/io/csv_writer.h"
 #include "coupler/mapping/mapping.h"
+#include "mpm/solver/health_check.h"
 #include "mpm/solver/mpm_output.h"
 #include "mpm/solver/mpm_solver.h"
 #include "mpm/solver/probes.h"
@@ -156,6 +157,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     long n = 0;
     while (!core::reached(mpm.time(), tEnd) && mpm.time() < tEnd - 1e-15) {
       mpm.advance(tEnd);
+      mpm::checkHealth(mpm);  // a violation ends the launch (mpm_solver's main aborts it)
       ++n;
     }
     return n;
@@ -280,6 +282,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     long n = 0;
     while (!core::reached(mpm.time(), scene.time.end)) {
       const double dt = mpm.advance(scene.time.end);
+      mpm::checkHealth(mpm);
       ++n;
       if (probes) probes->record(mpm);
       if (outputs.due(mpm.time()) && output) output->write(mpm);
