@@ -44,6 +44,17 @@ std::vector<BadScene> badScenes() {
   return {
       {"unknown top-level key", kBase + "gravty: [0]\n",
        {"test.yaml:7:1: gravty: unknown key 'gravty' at the top level", "did you mean 'gravity'?"}},
+      {"spacing far below the mesh (cells per direction overflow an int)",
+       "mesh: {dim: 1, lower: [0], upper: [1], spacing: 1.0e-12}\n" + kTime + kAir + kRegion,
+       {"test.yaml:1:", "mesh.spacing", "cells in x, more than the 2147483647 one direction can hold"}},
+      {"cell count overflows 64 bits",
+       "mesh: {dim: 3, lower: [0, 0, 0], upper: [1, 1, 1], cells: [2147483647, 2147483647, 2147483647]}\n" + kTime +
+           kAir + kRegion,
+       {"test.yaml:1:", "mesh.cells", "the mesh would have more than 9223372036854775807 cells"}},
+      {"scene larger than the machine's memory",
+       "mesh: {dim: 2, lower: [0, 0], upper: [1, 1], cells: [200000, 200000]}\n" + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1}\n",
+       {"test.yaml:1:", "the scene needs 4e+10 cells", "GiB this machine has available", "coarsen the mesh"}},
       {"misspelled EOS",
        kMesh + kTime + "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gass, gamma: 1.4}}\n" + kRegion,
        {"test.yaml:4:", "materials[0].eos.type: unknown equation of state 'ideal_gass'",
