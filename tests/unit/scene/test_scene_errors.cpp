@@ -265,3 +265,36 @@ TEST(SceneErrors, ErrorCarriesLocationAndKey) {
 
 }  // namespace
 }  // namespace mpmice::core
+
+namespace mpmice::core {
+namespace {
+
+// A hostile scene: 200,000 keys in one mapping, the duplicate among them named (the look-up is a
+// hash map now, not a comparison of every pair: docs/scene-reference.md gives the timing), and a
+// 1 MB value echoed capped, not whole.
+TEST(HostileScene, ManyKeysReadFastAndTheDuplicateIsNamed) {
+  std::string yaml = kBase + "output:\n";
+  for (int i = 0; i < 200000; ++i) yaml += "  k" + std::to_string(i) + ": 1\n";
+  yaml += "  k7: 2\n";
+  try {
+    (void)parseScene(yaml, "test.yaml");
+    FAIL() << "a duplicate key was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("duplicate key 'k7'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HostileScene, AHugeValueIsEchoedCapped) {
+  const std::string huge(1 << 20, 'x');
+  try {
+    (void)parseScene(kMesh + "time: {end: " + huge + "}\n" + kAir + kRegion, "test.yaml");
+    FAIL() << "a non-number end time was accepted";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_LT(m.size(), 400u) << m.substr(0, 400);
+    EXPECT_NE(m.find("(1048576 characters)"), std::string::npos) << m.substr(0, 400);
+  }
+}
+
+}  // namespace
+}  // namespace mpmice::core
