@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/io/csv_writer.h"
+#include "core/io/output_selection.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
 #include "couplings/volume/common/run_output.h"
@@ -33,14 +34,16 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     progress.start(scene.name + " (" + label + ", schedule " + std::string(core::name(scene.coupling.schedule)) +
                        ", " + std::to_string(particles) + " particles)",
                    scene.mesh.describe(), comm.size());
+  std::vector<std::string> materials;  // output.fields: each side writes its part of the list
+  for (const auto& m : scene.materials) materials.push_back(m.name);
   RunOutput out(scene, comm, decomp, both ? "" : sides.solid ? "_solid" : "_fluid", sides.solid != nullptr);
   auto output = [&](long n, double t) {
     std::vector<core::Field> fields;
     std::vector<const core::Field*> ptrs;
-    if (sides.fluid) fields = sides.fluid->solver().outputFields();
+    if (sides.fluid) fields = core::selectFields(sides.fluid->solver().outputFields(), scene.output.fields, materials);
     for (const auto& f : fields) ptrs.push_back(&f);
     core::ParticleOutput parts;
-    if (sides.solid) parts = sides.solid->particleOutput();
+    if (sides.solid) parts = core::selectParticles(sides.solid->particleOutput(), scene.output.fields);
     out.writeFields(n, t, ptrs, sides.solid ? &parts : nullptr);
     SideTotals solid, fluid;
     if (sides.solid) solid = sides.solid->totals();
