@@ -127,12 +127,28 @@ int main(int argc, char** argv) {
     const auto x = pr.readParticleArray("position"), s = pr.readParticleArray("stress");
     const auto n = static_cast<std::size_t>(x.shape[0]);
     const auto sc = static_cast<std::size_t>(s.shape.size() > 1 ? s.shape[1] : 1);
-    double err = 0;
-    for (std::size_t q = 0; q < n; ++q) err += std::abs(s.values[sc * q] + s.values[sc * q + 1] - sum) / sum;
+    // The error by band: particles within one cell of either surface, and the interior.
+    double err = 0, errBand = 0, errCore = 0;
+    std::size_t nBand = 0;
+    for (std::size_t q = 0; q < n; ++q) {
+      const double e = std::abs(s.values[sc * q] + s.values[sc * q + 1] - sum) / sum;
+      const double r = std::hypot(x.values[3 * q], x.values[3 * q + 1]);
+      err += e;
+      if (r < kRi + mesh.dx(0) || r > kRo - mesh.dx(0)) {
+        errBand += e;
+        ++nBand;
+      } else {
+        errCore += e;
+      }
+    }
     err /= double(n);
     std::printf("cylinder_lame: %s step %d t = %.4g s, dx = %g, %zu particles, P = %.5g Pa, exact sum %.5g Pa "
                 "(%s), Eq. 13 error = %.4g\n", parts.c_str(), pr.step(), pr.time(), mesh.dx(0), n, P, sum,
                 geo.fromScene ? "r_i, r_o, p_amb, p_ref from the scene" : "legacy: seed radii, absolute P", err);
+    std::printf("cylinder_lame: within one cell of a surface: %zu particles, mean error %.4g (%.0f %% of the sum); "
+                "interior: %zu particles, mean error %.4g\n", nBand, nBand ? errBand / double(nBand) : 0.0,
+                err > 0 ? 100.0 * errBand / (err * double(n)) : 0.0, n - nBand,
+                n > nBand ? errCore / double(n - nBand) : 0.0);
     // 4. Profile near the x-axis and plot.
     if (args.size() > 1) {
       const std::string prefix = args[1];
