@@ -199,6 +199,7 @@ struct AccelerationSpec {
   double relaxation = 0.5;        // constant; the initial one for aitken and iqn_ils
   int reuse = 8;                  // iqn_ils: past steps kept
   double filter = 1e-8;           // iqn_ils: QR filter threshold
+  bool preconditioner = false;    // iqn_ils: residual_sum (true) or none (default; docs/coupling.md)
   bool operator==(const AccelerationSpec&) const = default;
 };
 

@@ -599,10 +599,12 @@ class SchemaReader {
       a.type = am.required("type").option(kAccelerationNames, "acceleration");
       if (a.type == AccelerationType::None) am.allow({"type"}, "acceleration 'none' takes no parameters");
       if (a.type == AccelerationType::Constant || a.type == AccelerationType::Aitken) am.allow({"type", "relaxation"});
-      if (a.type == AccelerationType::IqnIls) am.allow({"type", "relaxation", "reuse", "filter"});
+      if (a.type == AccelerationType::IqnIls) am.allow({"type", "relaxation", "reuse", "filter", "preconditioner"});
       a.relaxation = am.number("relaxation", a.relaxation, Range::openClosed(0, 1));
       a.reuse = static_cast<int>(am.integer("reuse", a.reuse, 0, 1000));
       a.filter = am.number("filter", a.filter, Range::nonNegative());
+      a.preconditioner = am.choice("preconditioner", a.preconditioner ? "residual_sum" : "none",
+                                   {"residual_sum", "none"}, "preconditioner") == "residual_sum";
     }
   }
 
