@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <utility>
 #include <unistd.h>
 
 namespace mpmice::core {
@@ -43,19 +44,26 @@ std::string readAll(const std::string& path) {
   return ss.str();
 }
 
-bool alive(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM; }
-
-/// The parent of `pid` from /proc (0 when unknown).
-long parentOf(long pid) {
+/// State and parent of `pid` from /proc/<pid>/stat ({0, 0} when unknown).
+std::pair<char, long> stateAndParent(long pid) {
   std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
   std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto close = all.rfind(')');  // the command name may hold spaces
-  if (close == std::string::npos) return 0;
+  if (close == std::string::npos) return {0, 0};
   std::istringstream is(all.substr(close + 1));
   char state = 0;
   long ppid = 0;
   is >> state >> ppid;
-  return ppid;
+  return {state, ppid};
+}
+
+long parentOf(long pid) { return stateAndParent(pid).second; }
+
+/// Alive: it exists and has not ended (a zombie, ended but not yet reaped, is dead).
+bool alive(long pid) {
+  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  const char state = stateAndParent(pid).first;
+  return state != 'Z' && state != 'X';
 }
 
 /// Whether `pid` is this process or one of its ancestors.
