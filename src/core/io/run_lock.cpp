@@ -11,6 +11,8 @@
 #include <utility>
 #include <unistd.h>
 
+#include "core/io/text_file.h"
+
 namespace mpmice::core {
 
 namespace fs = std::filesystem;
@@ -35,13 +37,6 @@ Holder parse(const std::string& text) {
   is >> h.pid >> h.host >> h.program;
   if (!is && !is.eof()) h.pid = 0;
   return h;
-}
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 /// State and parent of `pid` from /proc/<pid>/stat ({0, 0} when unknown).
@@ -98,7 +93,7 @@ RunLock::RunLock(const std::string& directory, const std::string& name, const st
   text_ = std::to_string(getpid()) + " " + hostName() + " " + program + "\n";
   for (const auto& other : conflicts) {
     const std::string p = (fs::path(directory) / (other + ".lock")).string();
-    const std::string held = readAll(p);
+    const std::string held = readTextFile(p);
     const Holder h = parse(held);
     if (holderLive(h) && !(h.host == hostName() && selfOrAncestor(h.pid))) throw RunLockHeld(refusal(p, held));
   }
@@ -111,7 +106,7 @@ RunLock::RunLock(const std::string& directory, const std::string& name, const st
       return;
     }
     if (errno != EEXIST) throw std::runtime_error("cannot create the lock " + path_ + ": " + std::strerror(errno));
-    const std::string held = readAll(path_);
+    const std::string held = readTextFile(path_);
     const Holder h = parse(held);
     if (!h.ok()) {
       // Being written this instant, or a broken file: look again, then treat it as stale.
@@ -133,7 +128,7 @@ RunLock::RunLock(const std::string& directory, const std::string& name, const st
 }
 
 RunLock::~RunLock() {
-  if (readAll(path_) == text_) {
+  if (readTextFile(path_) == text_) {
     std::error_code ec;
     fs::remove(path_, ec);
   }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/text_file.h"
 #include "coupler/cli/process.h"
 
 namespace mpmice::coupler {
@@ -35,13 +36,6 @@ std::string withFunctionObject(const std::string& text, const std::string& entry
 }
 
 namespace {
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// Whether `inner` is `outer` or lies inside it (both absolute and normalised).
 bool within(const fs::path& inner, const fs::path& outer) {
@@ -72,7 +66,7 @@ void copyCaseFresh(const fs::path& source, const fs::path& target) {
   if (fs::exists(dst)) {
     // Only an earlier copy of `coupler run` (marker file, or its adapter entry) is replaced.
     const bool ours = fs::exists(dst / kCopyMarker) ||
-                      slurp(dst / "system" / "controlDict").find("added by `coupler run`") != std::string::npos;
+                      core::readTextFile(dst / "system" / "controlDict").find("added by `coupler run`") != std::string::npos;
     if (!ours)
       throw std::invalid_argument("coupler run: " + dst.string() +
                                   " exists and is not a case copy made by coupler run; refusing to delete it: move it "
@@ -100,7 +94,7 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
   const fs::path dst = fs::absolute(fs::path(scene.output.directory) / src.filename());
   copyCaseFresh(src, dst);
   const fs::path cd = dst / "system" / "controlDict";
-  std::string text = withFunctionObject(slurp(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
+  std::string text = withFunctionObject(core::readTextFile(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
   {
     // One end time: the scene's (two-way: both sides run to it; one-way: the fluid runs to it,
     // then the solid relaxes under the last forces for as long again).
@@ -115,7 +109,7 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
     const int status = runToFile({"blockMesh", "-case", dst.string()}, (dst / "log.blockMesh").string(),
                                  {"WM_PROJECT_DIR=/usr/share/openfoam"});
     if (status != 0) {
-      std::string log = slurp(dst / "log.blockMesh");
+      std::string log = core::readTextFile(dst / "log.blockMesh");
       if (log.size() > 2000) log = log.substr(log.size() - 2000);
       throw std::runtime_error("coupler run: blockMesh failed for " + dst.string() + ":\n" + log);
     }

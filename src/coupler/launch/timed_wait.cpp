@@ -8,8 +8,9 @@ namespace mpmice::coupler {
 
 std::string timeoutMessage(const std::string& peer, const std::string& what, double timeout, Waiting waiting) {
   std::ostringstream os;
-  if (waiting == Waiting::ForReceipt) os << "coupler: participant '" << peer << "' did not receive " << what;
-  else os << "coupler: no " << what << " from participant '" << peer << "'";
+  if (waiting == Waiting::ForReceipt) os << "coupler: " << what << " sent, but no receipt";
+  else os << "coupler: no " << what;
+  os << " from participant '" << peer << "'";
   os << " within " << timeout << " s (coupling.timeout); it has stopped or hangs";
   return os.str();
 }

@@ -20,7 +20,7 @@ class CouplingTimeout : public std::runtime_error {
 enum class Waiting { ForData, ForReceipt };
 
 /// The timeout message: "coupler: no <what> from participant '<peer>' within ..." when waiting for
-/// data, "coupler: participant '<peer>' did not receive <what> within ..." when sending.
+/// data, "coupler: <what> sent, but no receipt from participant '<peer>' within ..." when sending.
 std::string timeoutMessage(const std::string& peer, const std::string& what, double timeout, Waiting waiting);
 
 /// Waits for all requests; throws CouplingTimeout (timeoutMessage) after `timeout` seconds.

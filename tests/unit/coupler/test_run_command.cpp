@@ -180,8 +180,8 @@ TEST(CoupleRun, TheCaseCopyNeverDeletesTheSourceCase) {
 TEST(CoupleRun, ATimeoutNamesWhatWasAwaitedOnce) {
   // Sending: the peer did not take the data ("no receipt of receipt of ..." was the old wording).
   EXPECT_EQ(coupler::timeoutMessage("ice", "solid state", 3, coupler::Waiting::ForReceipt),
-            "coupler: participant 'ice' did not receive solid state within 3 s (coupling.timeout); it has stopped or "
-            "hangs");
+            "coupler: solid state sent, but no receipt from participant 'ice' within 3 s (coupling.timeout); it has "
+            "stopped or hangs");
   EXPECT_EQ(coupler::timeoutMessage("b", "solid state", 3, coupler::Waiting::ForData),
             "coupler: no solid state from participant 'b' within 3 s (coupling.timeout); it has stopped or hangs");
 }

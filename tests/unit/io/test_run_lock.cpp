@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/io/run_lock.h"
+#include "core/io/text_file.h"
 
 using namespace mpmice::core;
 namespace fs = std::filesystem;
@@ -38,19 +39,12 @@ pid_t deadPid() {
   return pid;
 }
 
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 }  // namespace
 
 TEST(RunLock, ASecondRunOfTheSceneIsRefusedNamingTheHolder) {
   const fs::path dir = scratch("second_run");
   const RunLock first(dir.string(), "scene", "mpmice");
-  EXPECT_EQ(readAll(dir / "scene.lock"), std::to_string(getpid()) + " " + host() + " mpmice\n");
+  EXPECT_EQ(readTextFile(dir / "scene.lock"), std::to_string(getpid()) + " " + host() + " mpmice\n");
   try {
     const RunLock second(dir.string(), "scene", "mpmice");
     FAIL() << "expected the second lock to be refused";
@@ -84,7 +78,7 @@ TEST(RunLock, AStaleLockOfADeadProcessIsTakenOverWithANote) {
                            std::to_string(dead) + " on host " + host() + " (mpmice), which is no longer running"),
             std::string::npos)
       << log.str();
-  EXPECT_EQ(readAll(dir / "scene.lock"), std::to_string(getpid()) + " " + host() + " mpmice\n");
+  EXPECT_EQ(readTextFile(dir / "scene.lock"), std::to_string(getpid()) + " " + host() + " mpmice\n");
 }
 
 TEST(RunLock, AConflictingLockIsAcceptedFromAnAncestorOnly) {
