@@ -2,6 +2,7 @@
 
 #include <HYPRE_struct_ls.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -22,7 +23,7 @@ void check(HYPRE_Int err, const char* what) {
 
 struct HypreStructPcg::Objects {
   core::Box owned, domain;
-  int dim = 0;
+  int dim = 0, hdim = 0;  // the mesh's dimension, hypre's (at least 2: PFMG and SMG have no 1D)
   std::array<bool, 3> periodic{};
   HYPRE_StructGrid grid = nullptr;
   HYPRE_StructStencil stencil = nullptr;
@@ -32,23 +33,23 @@ struct HypreStructPcg::Objects {
   HYPRE_Int lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
 
   Objects(MPI_Comm comm, const core::Box& ownedBox, const StencilBoundary& bc, int dimension)
-      : owned(ownedBox), domain(bc.domain), dim(dimension), periodic(bc.periodic) {
+      : owned(ownedBox), domain(bc.domain), dim(dimension), hdim(std::max(dimension, 2)), periodic(bc.periodic) {
     HYPRE_Init();  // idempotent; the CPU build needs nothing more
     HYPRE_Int period[3] = {0, 0, 0};
-    for (int d = 0; d < dim; ++d) {
+    for (int d = 0; d < hdim; ++d) {  // a 1D mesh is one row of cells (y index 0)
       lower[d] = owned.lo[d];
       upper[d] = owned.hi[d];
       if (periodic[d]) period[d] = domain.length(d);
     }
-    check(HYPRE_StructGridCreate(comm, dim, &grid), "StructGridCreate");
+    check(HYPRE_StructGridCreate(comm, hdim, &grid), "StructGridCreate");
     if (owned.ok()) check(HYPRE_StructGridSetExtents(grid, lower, upper), "StructGridSetExtents");
     check(HYPRE_StructGridSetPeriodic(grid, period), "StructGridSetPeriodic");
     check(HYPRE_StructGridAssemble(grid), "StructGridAssemble");
     // Entry 0 the centre, 1 + 2 d + s the neighbour at -1 (s = 0) or +1 (s = 1) along d.
-    check(HYPRE_StructStencilCreate(dim, 2 * dim + 1, &stencil), "StructStencilCreate");
+    check(HYPRE_StructStencilCreate(hdim, 2 * hdim + 1, &stencil), "StructStencilCreate");
     HYPRE_Int offset[3] = {0, 0, 0};
     check(HYPRE_StructStencilSetElement(stencil, 0, offset), "StructStencilSetElement");
-    for (int d = 0; d < dim; ++d)
+    for (int d = 0; d < hdim; ++d)
       for (int s = 0; s < 2; ++s) {
         HYPRE_Int o[3] = {0, 0, 0};
         o[d] = s ? 1 : -1;
@@ -61,7 +62,7 @@ struct HypreStructPcg::Objects {
     check(HYPRE_StructVectorCreate(comm, grid, &x), "StructVectorCreate");
     check(HYPRE_StructVectorInitialize(x), "StructVectorInitialize");
     const auto n = static_cast<std::size_t>(owned.numPts());
-    values.resize(n * static_cast<std::size_t>(2 * dim + 1));
+    values.resize(n * static_cast<std::size_t>(2 * hdim + 1));
     rhs.resize(n);
     sol.resize(n);
   }
@@ -86,14 +87,14 @@ LinearResult HypreStructPcg::solve(const FaceStencil& A, const StencilBoundary& 
   if (!h_ || h_->owned != A.owned || h_->dim != A.dim || h_->domain != bc.domain || h_->periodic != bc.periodic)
     h_ = std::make_unique<Objects>(comm_.raw(), A.owned, bc, A.dim);
   Objects& H = *h_;
-  const int ne = 2 * A.dim + 1;
+  const int ne = 2 * H.hdim + 1;
   // Values in hypre's order: the stencil entry fastest, then x, y, z (the owned box's order).
   double bb = 0;
   forEachRow(A, bc, [&](int i, int j, int k, double diag, const std::array<double, 6>& off) {
     const std::size_t c = static_cast<std::size_t>(A.owned.index(i, j, k));
     double* v = &H.values[c * static_cast<std::size_t>(ne)];
     v[0] = diag;
-    for (int e = 0; e < 2 * A.dim; ++e) v[1 + e] = -off[static_cast<std::size_t>(e)];
+    for (int e = 0; e < 2 * H.hdim; ++e) v[1 + e] = -off[static_cast<std::size_t>(e)];  // 0 beyond A.dim
     H.rhs[c] = b(i, j, k);
     H.sol[c] = 0.0;
     bb += H.rhs[c] * H.rhs[c];

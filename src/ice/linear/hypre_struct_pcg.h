@@ -6,7 +6,8 @@
 /// solver's communicator; periodic directions are hypre's periodic grid; the other sides of the
 /// mesh are folded into the matrix as ice/linear/assembled_rows.h does it (the coupling to a
 /// cell outside the mesh is always zero). The stencil has 2 dim + 1 points (centre, then low and
-/// high neighbour per direction). The stopping test is JacobiCg's: |r| <= tol |b| in Euclidean
+/// high neighbour per direction); a 1D mesh is given to hypre as one row of a 2D grid (5 points,
+/// the y couplings zero: PFMG and SMG have no 1D operators). The stopping test is JacobiCg's: |r| <= tol |b| in Euclidean
 /// norms over every rank (hypre's two-norm option), from x = 0; b = 0 gives x = 0 at once.
 ///
 /// The grid, stencil, matrix and vectors are built once (the first solve) and reused while the

@@ -135,8 +135,8 @@ class IceSolver {
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
   bool secondOrder_ = true, semiImplicit_ = false;
-  enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::Cg;
-  std::string linearSolverName_ = "cg";
+  enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;
+  std::string linearSolverName_ = "pfmg_pcg";
   int linIters_ = 0;
   long linItersTotal_ = 0;
   int limiter_ = 1;
