@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "ice_test_scenes.h"
 #include "test_comm.h"
@@ -23,7 +25,7 @@ namespace {
 
 constexpr double kTol = 1e-10;
 
-core::Scene jump(int dim, const std::string& solver) {
+core::Scene jump(int dim, const std::string& solver, double tol = kTol) {
   core::Scene s;
   s.name = "jump";
   const int nx = dim == 2 ? 32 : 12, ny = dim == 2 ? 24 : 10, nz = dim == 2 ? 1 : 8;
@@ -43,7 +45,7 @@ core::Scene jump(int dim, const std::string& solver) {
                 test::region("block", test::box({0.55, 0.2, 0.2}, {0.7, 0.7, 0.7}), {{"solid", 1.0}}, 1e5, 3600)};
   s.ice.pressure_solver = "semi_implicit";
   s.ice.linear_solver = solver;
-  s.ice.solver_tolerance = kTol;
+  s.ice.solver_tolerance = tol;
   return s;
 }
 
@@ -56,12 +58,6 @@ double relativeDifference(const ice::IceSolver& a, const ice::IceSolver& b, cons
     n2 += y * y;
   });
   return std::sqrt(comm.sum(d2) / comm.sum(n2));
-}
-
-core::Scene jump(int dim, const std::string& solver, double tol) {
-  core::Scene s = jump(dim, solver);
-  s.ice.solver_tolerance = tol;
-  return s;
 }
 
 void matchesCg(int dim) {
@@ -99,3 +95,21 @@ TEST(IceHyprePressure, MatchesCgTwoD) { matchesCg(2); }
 TEST(IceHyprePressure, MatchesCgThreeD) { matchesCg(3); }
 TEST(IceHyprePressure, RanksGiveTheOneRankAnswerTwoD) { matchesOneRank(2); }
 TEST(IceHyprePressure, RanksGiveTheOneRankAnswerThreeD) { matchesOneRank(3); }
+
+// Not reaching the tolerance within ice.solver_max_iterations stops the run, as cg does.
+TEST(IceHyprePressure, NotConvergingIsAnError) {
+  for (const char* name : {"cg", "pfmg_pcg"}) {
+    core::Scene s = jump(2, name, 1e-14);
+    s.ice.solver_max_iterations = 2;
+    ice::IceSolver h(s, test::comm());
+    try {
+      h.step();
+      ADD_FAILURE() << name << ": no error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("ice: semi-implicit pressure (") + name +
+                                           ") did not reach the tolerance"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
