@@ -175,7 +175,7 @@ struct IceOptions {
   std::string advection = "second_order";  // first_order | second_order
   std::string limiter = "van_leer";        // minmod | van_leer | superbee (second order)
   std::string pressure_solver = "explicit";  // explicit | semi_implicit
-  std::string linear_solver = "cg";        // cg | bicgstab (semi_implicit)
+  std::string linear_solver = "pfmg_pcg";  // pfmg_pcg | smg_pcg | cg | bicgstab (semi_implicit)
   double solver_tolerance = 1e-10;
   int solver_max_iterations = 1000;
   double exchange_momentum = 1e15;         // default K for every pair

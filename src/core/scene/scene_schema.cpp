@@ -518,7 +518,7 @@ class SchemaReader {
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
     o.pressure_solver = m.choice("pressure_solver", o.pressure_solver, {"explicit", "semi_implicit"}, "pressure solver");
-    o.linear_solver = m.choice("linear_solver", o.linear_solver, {"cg", "bicgstab"}, "linear solver");
+    o.linear_solver = m.choice("linear_solver", o.linear_solver, {"cg", "bicgstab", "pfmg_pcg", "smg_pcg"}, "linear solver");
     o.solver_tolerance = m.number("solver_tolerance", o.solver_tolerance, Range::positive());
     o.solver_max_iterations = static_cast<int>(m.integer("solver_max_iterations", o.solver_max_iterations, 1, kIntMax));
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));

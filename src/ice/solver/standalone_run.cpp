@@ -58,7 +58,9 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     double maxIt = 0;
     const auto& it = solver.state().iters;
     core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });
-    progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), {{"p_iters", comm.max(maxIt)}});
+    core::Progress::Extras extras{{"p_iters", comm.max(maxIt)}};
+    if (solver.semiImplicit()) extras.emplace_back("lin_iters", double(solver.linearIterations()));
+    progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), extras);
     if (outputs.due(solver.time())) output();
   }
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) output();  // the last step

@@ -110,7 +110,10 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     }
     if (probes) probes->record(sides.solid->solver());
     if (outputs.due(t)) output(n, t);
-    progress.step(static_cast<int>(n), t, dt, {{"iters", double(r.iterations)}});
+    core::Progress::Extras extras{{"iters", double(r.iterations)}};
+    if (sides.fluid && sides.fluid->solver().semiImplicit())
+      extras.emplace_back("lin_iters", double(sides.fluid->solver().linearIterations()));
+    progress.step(static_cast<int>(n), t, dt, extras);
   }
   // 3. The last step is always written.
   if (!outputs.written(t) && outputs.due(t, true)) output(n, t);
@@ -123,6 +126,11 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     log << "coupling: this process computed " << computeTotal << " s and spent "
         << transport.seconds() - exchangeStart << " s in exchange (" << (both ? "in memory" : "rank to rank")
         << ")\n";
+  }
+  if (comm.root() && sides.fluid && sides.fluid->solver().semiImplicit()) {
+    const long lin = sides.fluid->solver().linearIterationsTotal();
+    log << "ice: semi-implicit pressure (" << scene.ice.linear_solver << "), " << lin << " linear iterations in " << n
+        << " steps (" << double(lin) / double(std::max(1L, n)) << " per step)\n";
   }
   if (both)
     progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()));
