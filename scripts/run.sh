@@ -21,7 +21,7 @@ fluids=$(grep -cE '^\s*kind:\s*fluid' "$scene" || true)
 if [ "$scene" = configs/pressurized_cylinder.yaml ]; then
   "$build/coupler/coupler" run --bin-dir "$build" "$scene"
   exec "$build/benchmarks/coupled/cylinder_lame" output/pressurized_cylinder/pressurized_cylinder \
-       output/pressurized_cylinder/lame
+       output/pressurized_cylinder/lame --scene "$scene"
 elif [ "$solids" -gt 0 ] && [ "$fluids" -gt 0 ]; then
   exec "$build/coupler/coupler" run --bin-dir "$build" "$scene"
 elif [ "$solids" -gt 0 ]; then

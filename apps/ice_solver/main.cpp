@@ -15,6 +15,7 @@
 
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
+#include "coupler/launch/output_lock.h"
 #include "coupler/launch/participant.h"
 #include "couplings/volume/fluid/fluid_participant.h"
 #include "core/health/health.h"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     // 1. The scene; join the launch.
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "ice", scene.coupling.timeout);
+    const auto lock = coupler::lockParticipantOutput(participant, scene, "ice_solver");
     if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
     return ice::runStandalone(scene, participant.local(), std::cout);  // 2.
   } catch (const core::SceneError& e) {

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "coupler/launch/output_lock.h"
 #include "coupler/launch/participant.h"
 #include "couplings/volume/solid/solid_participant.h"
 #include "couplings/surface/solid/surface_solid_participant.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
     // 1. Scene and launch.
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
+    const auto lock = coupler::lockParticipantOutput(participant, scene, "mpm_solver");
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {

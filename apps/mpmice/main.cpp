@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "core/health/health.h"
+#include "core/io/run_lock.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
 #include "couplings/volume/monolithic/monolithic_run.h"
@@ -25,12 +26,16 @@ int main(int argc, char** argv) {
   }
   try {
     const core::Scene scene = core::loadScene(argv[1]);  // 1.
+    const auto lock = core::lockOutputDirectory(comm, scene, "mpmice", &std::cerr);  // every rank learns a refusal
     return coupler::runMonolithic(scene, comm, std::cout);  // 2.
   } catch (const core::SceneError& e) {
     if (comm.root()) std::cerr << e.what() << "\n";
     return 2;
   } catch (const core::HealthError& e) {  // every rank throws it: one prints, all end 1
     if (e.reporter()) std::cerr << "mpmice: error: " << e.what() << std::endl;
+    return 1;
+  } catch (const core::RunLockHeld& e) {
+    if (comm.root()) std::cerr << "mpmice: error: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "mpmice: " << e.what() << "\n";

@@ -125,8 +125,11 @@ std::string OutputWriter::writeStep(int step, double time, const std::vector<con
   rec.step = step;
   rec.time = time;
   rec.h5file = std::filesystem::path(path).filename().string();
+  // Written under a temporary name, renamed when complete: a run killed mid-write leaves no
+  // partial file under the step's name.
+  const std::string partial = path + ".part";
   {
-    const H5File file = H5File::create(comm_, path);
+    const H5File file = H5File::create(comm_, partial);
     const H5Group root = file.root();
     root.writeAttribute("time", std::vector<double>{time});
     root.writeAttribute("step", std::vector<std::int64_t>{step});
@@ -151,6 +154,14 @@ std::string OutputWriter::writeStep(int step, double time, const std::vector<con
         rec.particles.push_back({v.name, static_cast<int>(v.components.size())});
     }
   }
+
+  err.clear();
+  if (comm_.root()) {
+    std::error_code ec;
+    std::filesystem::rename(partial, path, ec);
+    if (ec) err = "OutputWriter: cannot rename '" + partial + "' to '" + path + "': " + ec.message();
+  }
+  agree(comm_, err);
 
   // 3. The XDMF index over every step so far (rank 0 writes; all ranks keep the record).
   xdmf_.add(std::move(rec));

@@ -176,7 +176,7 @@ struct IceOptions {
   std::string advection = "second_order";  // first_order | second_order
   std::string limiter = "van_leer";        // minmod | van_leer | superbee (second order)
   std::string pressure_solver = "explicit";  // explicit | semi_implicit
-  std::string linear_solver = "cg";        // cg | bicgstab (semi_implicit)
+  std::string linear_solver = "pfmg_pcg";  // pfmg_pcg | smg_pcg | cg | bicgstab (semi_implicit)
   double solver_tolerance = 1e-10;
   int solver_max_iterations = 1000;
   double exchange_momentum = 1e15;         // default K for every pair
@@ -200,6 +200,7 @@ struct AccelerationSpec {
   double relaxation = 0.5;        // constant; the initial one for aitken and iqn_ils
   int reuse = 8;                  // iqn_ils: past steps kept
   double filter = 1e-8;           // iqn_ils: QR filter threshold
+  bool preconditioner = false;    // iqn_ils: residual_sum (true) or none (default; docs/coupling.md)
   bool operator==(const AccelerationSpec&) const = default;
 };
 

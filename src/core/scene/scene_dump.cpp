@@ -279,7 +279,9 @@ void options(std::ostream& o, const Scene& s) {
   const AccelerationSpec& a = c.acceleration;
   o << "  acceleration: {type: " << name(a.type);
   if (a.type != AccelerationType::None) o << ", relaxation: " << num(a.relaxation);
-  if (a.type == AccelerationType::IqnIls) o << ", reuse: " << a.reuse << ", filter: " << num(a.filter);
+  if (a.type == AccelerationType::IqnIls)
+    o << ", reuse: " << a.reuse << ", filter: " << num(a.filter)
+      << ", preconditioner: " << (a.preconditioner ? "residual_sum" : "none");
   o << "}\n";
   const OutputSpec& out = s.output;
   o << "output:\n  directory: " << quote(out.directory) << "\n  interval: " << num(out.interval) << "\n  fields: [";

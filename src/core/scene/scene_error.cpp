@@ -14,7 +14,8 @@ std::string SourceLoc::str() const {
 namespace {
 std::string composeMessage(const SourceLoc& where, const std::string& key, const std::string& what) {
   std::string msg = where.str() + ": ";
-  if (!key.empty()) msg += key + ": ";
+  // A key path is echoed whole up to 200 characters (a hostile key must not flood stderr).
+  if (!key.empty()) msg += (key.size() <= 200 ? key : key.substr(0, 197) + "...") + ": ";
   return msg + what;
 }
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/scene/did_you_mean.h"
 #include "core/scene/model_catalog.h"
+#include "core/scene/resource_estimate.h"
 #include "core/scene/scene.h"
 #include "core/scene/shape.h"
 #include "core/scene/yaml_reader.h"
@@ -85,6 +86,7 @@ class SchemaReader {
     if (const auto v = top.get("ice")) readIce(*v);
     if (const auto v = top.get("coupling")) readCoupling(*v);
     if (const auto v = top.get("output")) readOutput(*v);
+    checkMemory(top.required("mesh"));
     return s_;
   }
 
@@ -129,12 +131,34 @@ class SchemaReader {
           spacing->fail("spacing " + str(h[d]) + " does not divide the mesh extent " + str(extent) + " in " +
                         kAxes[d] + " (" + str(extent) + " / " + str(h[d]) + " = " + str(ratio) +
                         "); choose a spacing that fits a whole number of cells, or give cells");
+        if (rounded > double(kIntMax))
+          spacing->fail("spacing " + str(h[d]) + " gives " + str(rounded) + " cells in " + kAxes[d] +
+                        ", more than the " + std::to_string(kIntMax) + " one direction can hold; choose a coarser spacing");
         n[d] = static_cast<int>(rounded);
       }
     }
+    // The cell count in checked 64-bit arithmetic (each direction fits an int, the product may not).
+    std::int64_t total = 1;
+    for (int d = 0; d < dim_; ++d)
+      if (__builtin_mul_overflow(total, std::int64_t(n[d]), &total))
+        (cells ? *cells : *spacing)
+            .fail("the mesh would have more than " + std::to_string(std::numeric_limits<std::int64_t>::max()) +
+                  " cells (" + std::to_string(n[0]) + (dim_ > 1 ? " x " + std::to_string(n[1]) : "") +
+                  (dim_ > 2 ? " x " + std::to_string(n[2]) : "") + "); choose fewer cells");
     // The mesh spans exactly [lower, upper]: the spacing is the extent over the cell count.
     for (int d = 0; d < dim_; ++d) dx[d] = (upper[d] - lower[d]) / n[d];
     s_.mesh = Mesh(dim_, lower, dx, n);
+  }
+
+  /// A scene whose lower-bound memory estimate exceeds what this machine has available now
+  /// cannot run: refuse it with the estimate (resource_estimate.h).
+  void checkMemory(const YamlValue& mesh) const {
+    const ResourceEstimate e = estimateResources(s_);
+    const double available = availableMemory();
+    if (available > 0 && e.bytes > available)
+      mesh.fail("the scene needs " + e.describe() + " (a lower bound), more than the " +
+                str(available / 1073741824.0) + " GiB this machine has available; coarsen the mesh " +
+                "(mesh.spacing or mesh.cells) or the solids' particles_per_cell");
   }
 
   // ------------------------------------------------------------------------------------ time
@@ -496,7 +520,7 @@ class SchemaReader {
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
     o.pressure_solver = m.choice("pressure_solver", o.pressure_solver, {"explicit", "semi_implicit"}, "pressure solver");
-    o.linear_solver = m.choice("linear_solver", o.linear_solver, {"cg", "bicgstab"}, "linear solver");
+    o.linear_solver = m.choice("linear_solver", o.linear_solver, {"cg", "bicgstab", "pfmg_pcg", "smg_pcg"}, "linear solver");
     o.solver_tolerance = m.number("solver_tolerance", o.solver_tolerance, Range::positive());
     o.solver_max_iterations = static_cast<int>(m.integer("solver_max_iterations", o.solver_max_iterations, 1, kIntMax));
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));
@@ -577,10 +601,12 @@ class SchemaReader {
       a.type = am.required("type").option(kAccelerationNames, "acceleration");
       if (a.type == AccelerationType::None) am.allow({"type"}, "acceleration 'none' takes no parameters");
       if (a.type == AccelerationType::Constant || a.type == AccelerationType::Aitken) am.allow({"type", "relaxation"});
-      if (a.type == AccelerationType::IqnIls) am.allow({"type", "relaxation", "reuse", "filter"});
+      if (a.type == AccelerationType::IqnIls) am.allow({"type", "relaxation", "reuse", "filter", "preconditioner"});
       a.relaxation = am.number("relaxation", a.relaxation, Range::openClosed(0, 1));
       a.reuse = static_cast<int>(am.integer("reuse", a.reuse, 0, 1000));
       a.filter = am.number("filter", a.filter, Range::nonNegative());
+      a.preconditioner = am.choice("preconditioner", a.preconditioner ? "residual_sum" : "none",
+                                   {"residual_sum", "none"}, "preconditioner") == "residual_sum";
     }
   }
 

@@ -21,6 +21,14 @@ SourceLoc locOf(const YAML::Mark& m, const std::string& file) {
   return loc;
 }
 
+/// A value as echoed in a message: at most 80 characters (a 50 MB scalar must not become 50 MB
+/// of stderr).
+std::string capped(const std::string& v) {
+  constexpr std::size_t kMax = 80;
+  if (v.size() <= kMax) return v;
+  return v.substr(0, kMax - 3) + "... (" + std::to_string(v.size()) + " characters)";
+}
+
 std::string childPath(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }
@@ -88,7 +96,7 @@ void YamlValue::fail(const std::string& what) const { throw SceneError(loc(), pa
 
 std::string YamlValue::shown() const {
   if (isNull()) return "nothing";
-  if (isScalar()) return "'" + node_.Scalar() + "'";
+  if (isScalar()) return "'" + capped(node_.Scalar()) + "'";
   if (isList()) return "a list";
   return "a mapping";
 }
@@ -97,7 +105,7 @@ double YamlValue::number(const Range& r) const {
   if (!isScalar()) fail("expected a number " + r.describe() + ", got " + shown());
   const auto v = toDouble(node_.Scalar());
   if (!v) fail("expected a number, got " + shown());
-  if (!r.contains(*v)) fail(node_.Scalar() + " is out of range; expected a number " + r.describe());
+  if (!r.contains(*v)) fail(capped(node_.Scalar()) + " is out of range; expected a number " + r.describe());
   return *v;
 }
 
@@ -112,7 +120,7 @@ long YamlValue::integer(long lo, long hi) const {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || ec != std::errc() || end != s.data() + s.size())
     fail("expected an integer, got " + shown());
-  if (v < lo || v > hi) fail(node_.Scalar() + " is out of range; expected an integer " + range);
+  if (v < lo || v > hi) fail(capped(node_.Scalar()) + " is out of range; expected an integer " + range);
   return v;
 }
 
@@ -134,7 +142,8 @@ std::string YamlValue::choice(const std::vector<std::string>& valid, const std::
   if (!isScalar()) fail("expected the name of a " + noun + " (" + joinNames(valid) + "), got " + shown());
   const std::string s = node_.Scalar();
   if (std::find(valid.begin(), valid.end(), s) != valid.end()) return s;
-  fail("unknown " + noun + " '" + s + "'; valid: " + joinNames(valid) + didYouMean(s, valid));
+  fail("unknown " + noun + " '" + capped(s) + "'; valid: " + joinNames(valid) +
+       (s.size() <= 80 ? didYouMean(s, valid) : std::string()));
 }
 
 std::vector<YamlValue> YamlValue::list() const {
@@ -176,11 +185,11 @@ YamlMap::YamlMap(const YamlValue& v) : self_(v) {
     YamlValue keyValue(k, v.path(), self_.loc().file);
     if (!k.IsScalar()) keyValue.fail("keys must be plain names, got " + keyValue.shown());
     const std::string key = k.Scalar();
-    for (const auto& e : entries_)
-      if (e.key == key)
-        throw SceneError(locOf(k.Mark(), self_.loc().file), childPath(v.path(), key),
-                         "duplicate key '" + key + "' (first given at line " +
-                             std::to_string(e.keyNode.Mark().line + 1) + ")");
+    if (const auto seen = index_.find(key); seen != index_.end())
+      throw SceneError(locOf(k.Mark(), self_.loc().file), childPath(v.path(), key),
+                       "duplicate key '" + capped(key) + "' (first given at line " +
+                           std::to_string(entries_[seen->second].keyNode.Mark().line + 1) + ")");
+    index_.emplace(key, entries_.size());
     entries_.push_back({key, k, YamlValue(kv.second, childPath(v.path(), key), self_.loc().file)});
   }
 }
@@ -189,8 +198,8 @@ void YamlMap::allow(const std::vector<std::string>& keys, const std::string& not
   if (const auto bad = firstKeyOutside(keys)) {
     const std::string key = bad->node().Scalar();
     const std::string where = path().empty() ? "at the top level" : "in " + path();
-    std::string msg = "unknown key '" + key + "' " + where + "; valid keys: " + joinNames(keys) +
-                      didYouMean(key, keys);
+    std::string msg = "unknown key '" + capped(key) + "' " + where + "; valid keys: " + joinNames(keys) +
+                      (key.size() <= 80 ? didYouMean(key, keys) : std::string());
     if (!note.empty()) msg += "; " + note;
     bad->fail(msg);
   }
@@ -206,8 +215,7 @@ std::optional<YamlValue> YamlMap::firstKeyOutside(const std::vector<std::string>
 bool YamlMap::has(const std::string& key) const { return get(key).has_value(); }
 
 std::optional<YamlValue> YamlMap::get(const std::string& key) const {
-  for (const auto& e : entries_)
-    if (e.key == key) return e.value;
+  if (const auto it = index_.find(key); it != index_.end()) return entries_[it->second].value;
   return std::nullopt;
 }
 

@@ -10,6 +10,7 @@
 
 #include <limits>
 #include <optional>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -128,6 +129,7 @@ class YamlMap {
   };
   YamlValue self_;
   std::vector<Entry> entries_;
+  std::unordered_map<std::string, std::size_t> index_;  // key -> entry (duplicate keys in O(n))
   std::string file_;
 };
 

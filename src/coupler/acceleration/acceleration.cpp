@@ -21,7 +21,7 @@ std::unique_ptr<Acceleration> makeAcceleration(const AccelerationParams& p, cons
   if (p.type == "aitken") return std::make_unique<AitkenRelaxation>(p.relaxation, comm);
   if (p.type == "iqn_ils") {
     if (p.reuse < 0) throw std::invalid_argument("coupling.acceleration.reuse must be >= 0");
-    return std::make_unique<IqnIls>(p.relaxation, p.reuse, p.filter, comm);
+    return std::make_unique<IqnIls>(p.relaxation, p.reuse, p.filter, comm, p.precondition);
   }
   throw std::invalid_argument("unknown coupling.acceleration.type '" + p.type +
                               "'; valid: none, constant, aitken, iqn_ils");

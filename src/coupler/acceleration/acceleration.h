@@ -24,11 +24,21 @@ struct AccelerationParams {
   double relaxation = 0.5;
   int reuse = 8;
   double filter = 1e-8;
+  bool precondition = false;  // iqn_ils: the residual-sum preconditioner over the iterate's segments
+};
+
+/// A named piece of the iterate: elements [offset, offset + size) belong to group `group` (one
+/// group per field name; a preconditioner weighs each group alike).
+struct Segment {
+  Eigen::Index offset = 0, size = 0;
+  int group = 0;
 };
 
 class Acceleration {
  public:
   virtual ~Acceleration() = default;
+  /// The iterate's layout (called before a step's first iteration; the same layout is a no-op).
+  virtual void setSegments(const std::vector<Segment>& /*segments*/) {}
   /// x: the input of this iteration; xTilde: the solvers' output. Returns the next input.
   virtual Eigen::VectorXd performAcceleration(const Eigen::VectorXd& x, const Eigen::VectorXd& xTilde) = 0;
   /// The step's iterations converged: the next call starts a new step.

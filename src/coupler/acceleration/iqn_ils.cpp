@@ -1,74 +1,124 @@
 #include "coupler/acceleration/iqn_ils.h"
 
+#include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace mpmice::coupler {
 
+Eigen::VectorXd IqnIls::scaled(const Eigen::VectorXd& v) const {
+  return weight_.size() == v.size() ? Eigen::VectorXd(v.cwiseProduct(weight_)) : v;
+}
+
+void IqnIls::insert(Column c) {
+  const Eigen::VectorXd pv = scaled(c.v);
+  c.norm = std::sqrt(comm_.sum(pv.squaredNorm()));
+  qr_.pushFront(pv);
+  cols_.push_front(std::move(c));
+}
+
+void IqnIls::filter() {
+  for (int j = 0; j < qr_.cols();) {
+    const double norm = cols_[static_cast<std::size_t>(j)].norm;
+    if (!(norm > 0) || qr_.diagonal(j) < filter_ * norm) {
+      qr_.erase(j);
+      cols_.erase(cols_.begin() + j);
+    } else {
+      ++j;
+    }
+  }
+}
+
+void IqnIls::setSegments(const std::vector<Segment>& segments) {
+  if (!precondition_) return;
+  const bool same = segments.size() == segments_.size() &&
+                    std::equal(segments.begin(), segments.end(), segments_.begin(), [](const Segment& a, const Segment& b) {
+                      return a.offset == b.offset && a.size == b.size && a.group == b.group;
+                    });
+  if (same) return;
+  segments_ = segments;
+  int groups = 0;
+  for (const auto& s : segments_) groups = std::max(groups, s.group + 1);
+  groups = comm_.max(groups);  // a rank may hold no element of some group
+  groupWeight_.assign(static_cast<std::size_t>(groups), 1.0);
+  residualShare_.assign(static_cast<std::size_t>(groups), 0.0);
+  weight_.resize(0);
+  cols_.clear();
+  qr_.clear();
+}
+
+void IqnIls::accumulateResidual(const Eigen::VectorXd& r) {
+  if (segments_.empty()) return;
+  std::vector<double> sq(groupWeight_.size(), 0.0);
+  for (const auto& s : segments_)
+    if (s.offset + s.size <= r.size()) sq[static_cast<std::size_t>(s.group)] += r.segment(s.offset, s.size).squaredNorm();
+  comm_.sumInPlace(sq);
+  double total = 0;
+  for (double& v : sq) total += (v = std::sqrt(v));
+  if (total > 0)
+    for (std::size_t g = 0; g < sq.size(); ++g) residualShare_[g] += sq[g] / total;
+}
+
+std::vector<double> IqnIls::proposedWeights() const {
+  std::vector<double> w(residualShare_.size(), 1.0);
+  for (std::size_t g = 0; g < w.size(); ++g)
+    if (residualShare_[g] > 0) w[g] = 1.0 / residualShare_[g];
+  return w;
+}
+
+void IqnIls::adopt(const std::vector<double>& w) {
+  groupWeight_ = w;
+  Eigen::Index n = 0;
+  for (const auto& s : segments_) n = std::max(n, s.offset + s.size);
+  weight_ = Eigen::VectorXd::Ones(n);
+  for (const auto& s : segments_) weight_.segment(s.offset, s.size).setConstant(w[static_cast<std::size_t>(s.group)]);
+  // The columns were factorised with the old weights: factorise them again, oldest first.
+  if (cols_.empty()) return;
+  std::deque<Column> old;
+  old.swap(cols_);
+  qr_.clear();
+  for (auto it = old.rbegin(); it != old.rend(); ++it) {
+    insert(std::move(*it));
+    filter();
+  }
+  ++rebuilds_;
+}
+
 Eigen::VectorXd IqnIls::performAcceleration(const Eigen::VectorXd& x, const Eigen::VectorXd& xt) {
   const Eigen::VectorXd r = xt - x;
-  if (havePrev_) current_.push_front({r - rPrev_, xt - xtPrev_});
+  accumulateResidual(r);
+  if (!segments_.empty() && cols_.empty() && !havePrev_) adopt(proposedWeights());  // free: no columns yet
+  if (havePrev_) {
+    insert({r - rPrev_, xt - xtPrev_, 0.0, 0});
+    filter();
+  }
   rPrev_ = r;
   xtPrev_ = xt;
   havePrev_ = true;
-
-  // Gather columns: this step's, then the reused steps', newest first.
-  std::vector<const Column*> cols;
-  for (const auto& c : current_) cols.push_back(&c);
-  for (const auto& step : past_)
-    for (const auto& c : step) cols.push_back(&c);
-  if (cols.empty()) {
-    used_ = 0;
-    return x + w0_ * r;
-  }
-
-  // Modified Gram-Schmidt (twice, for stability) with the QR filter: Q columns orthonormal,
-  // R upper triangular. Columns whose orthogonal part is too small are dropped.
-  std::vector<Eigen::VectorXd> q;
-  std::vector<const Column*> kept;
-  std::vector<std::vector<double>> rcols;  // R column j: coefficients on q_0..q_j
-  for (const Column* c : cols) {
-    Eigen::VectorXd v = c->v;
-    const double norm0 = std::sqrt(comm_.sum(v.squaredNorm()));
-    if (!(norm0 > 0)) continue;
-    std::vector<double> coeff(q.size() + 1, 0.0);
-    for (int pass = 0; pass < 2; ++pass)
-      for (std::size_t i = 0; i < q.size(); ++i) {
-        const double h = comm_.sum(q[i].dot(v));
-        coeff[i] += h;
-        v -= h * q[i];
-      }
-    const double rho = std::sqrt(comm_.sum(v.squaredNorm()));
-    if (rho < filter_ * norm0) continue;  // near-dependent on newer columns: filtered out
-    coeff.back() = rho;
-    q.push_back(v / rho);
-    kept.push_back(c);
-    rcols.push_back(std::move(coeff));
-  }
-  used_ = static_cast<int>(kept.size());
-  if (kept.empty()) return x + w0_ * r;
-
-  // Solve R a = -Q^T r by back substitution.
-  const std::size_t m = kept.size();
-  std::vector<double> b(m), a(m, 0.0);
-  for (std::size_t i = 0; i < m; ++i) b[i] = -comm_.sum(q[i].dot(r));
-  for (std::size_t ii = m; ii-- > 0;) {
-    double s = b[ii];
-    for (std::size_t j = ii + 1; j < m; ++j) s -= rcols[j][ii] * a[j];
-    a[ii] = s / rcols[ii][ii];
-  }
+  used_ = qr_.cols();
+  if (used_ == 0) return x + w0_ * r;
+  const Eigen::VectorXd a = qr_.solve(-scaled(r));
   Eigen::VectorXd next = xt;
-  for (std::size_t j = 0; j < m; ++j) next += a[j] * kept[j]->w;
+  for (int j = 0; j < used_; ++j) next += a[j] * cols_[static_cast<std::size_t>(j)].w;
   return next;
 }
 
 void IqnIls::iterationsConverged() {
-  if (reuse_ > 0 && !current_.empty()) {
-    past_.push_front(std::move(current_));
-    while (static_cast<int>(past_.size()) > reuse_) past_.pop_back();
+  for (auto& c : cols_) ++c.age;
+  while (!cols_.empty() && cols_.back().age > reuse_) {
+    qr_.erase(qr_.cols() - 1);
+    cols_.pop_back();
   }
-  current_.clear();
   havePrev_ = false;
+  if (!segments_.empty()) {
+    const std::vector<double> w = proposedWeights();
+    bool moved = false;
+    for (std::size_t g = 0; g < w.size(); ++g) {
+      const double ratio = w[g] / groupWeight_[g];
+      moved = moved || ratio > 10.0 || ratio < 0.1;
+    }
+    if (moved) adopt(w);
+    std::fill(residualShare_.begin(), residualShare_.end(), 0.0);
+  }
 }
 
 }  // namespace mpmice::coupler

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "coupler/cli/command_line.h"
+#include "core/scene/resource_estimate.h"
 
 namespace mpmice::coupler {
 
@@ -19,6 +20,7 @@ std::string summarizeScene(const core::Scene& s) {
   end << s.time.end;
   text += "; end time " + end.str() + " s";
   text += "; coupling " + std::string(core::name(s.coupling.schedule)) + " with " + std::string(core::name(s.coupling.fluid));
+  text += "; needs " + core::estimateResources(s).describe();
   text += "; hash " + core::sceneHash(s);
   return text;
 }

@@ -6,7 +6,9 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
+
+#include "core/io/text_file.h"
+#include "coupler/cli/process.h"
 
 namespace mpmice::coupler {
 
@@ -35,14 +37,46 @@ std::string withFunctionObject(const std::string& text, const std::string& entry
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+/// Whether `inner` is `outer` or lies inside it (both absolute and normalised).
+bool within(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+    if (o->empty()) continue;  // a trailing separator
+    else if (i == inner.end() || *i != *o) return false;
+  return true;
 }
 
+fs::path normalised(const fs::path& p) {
+  std::error_code ec;
+  const fs::path c = fs::weakly_canonical(fs::absolute(p), ec);
+  return (ec ? fs::absolute(p) : c).lexically_normal();
+}
+
+constexpr const char* kCopyMarker = ".mpmice_case_copy";
+
 }  // namespace
+
+void copyCaseFresh(const fs::path& source, const fs::path& target) {
+  const fs::path src = normalised(source), dst = normalised(target);
+  if (within(dst, src) || within(src, dst))
+    throw std::invalid_argument("coupler run: the OpenFOAM case copy " + dst.string() +
+                                (dst == src ? " is" : within(dst, src) ? " lies inside" : " contains") +
+                                " the source case " + src.string() +
+                                "; refusing to overwrite it: set output.directory to a folder of its own (e.g. output)");
+  if (fs::exists(dst)) {
+    // Only an earlier copy of `coupler run` (marker file, or its adapter entry) is replaced.
+    const bool ours = fs::exists(dst / kCopyMarker) ||
+                      core::readTextFile(dst / "system" / "controlDict").find("added by `coupler run`") != std::string::npos;
+    if (!ours)
+      throw std::invalid_argument("coupler run: " + dst.string() +
+                                  " exists and is not a case copy made by coupler run; refusing to delete it: move it "
+                                  "away or set output.directory to another folder");
+    fs::remove_all(dst);
+  }
+  fs::create_directories(dst.parent_path());
+  fs::copy(src, dst, fs::copy_options::recursive);
+  std::ofstream(dst / kCopyMarker) << "a copy of " << src.string() << " made by coupler run; replaced by the next run\n";
+}
 
 std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                                 std::ostream& out) {
@@ -58,12 +92,9 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
     throw std::invalid_argument("coupler run: the OpenFOAM adapter " + lib +
                                 " is not built (needs OpenFOAM's headers: scripts/openfoam_headers.sh, then cmake)");
   const fs::path dst = fs::absolute(fs::path(scene.output.directory) / src.filename());
-  std::error_code ec;
-  fs::remove_all(dst, ec);
-  fs::create_directories(dst.parent_path());
-  fs::copy(src, dst, fs::copy_options::recursive);
+  copyCaseFresh(src, dst);
   const fs::path cd = dst / "system" / "controlDict";
-  std::string text = withFunctionObject(slurp(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
+  std::string text = withFunctionObject(core::readTextFile(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
   {
     // One end time: the scene's (two-way: both sides run to it; one-way: the fluid runs to it,
     // then the solid relaxes under the last forces for as long again).
@@ -74,12 +105,11 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
   }
   std::ofstream(cd) << text;
   if (!fs::exists(dst / "constant" / "polyMesh" / "points") && !fs::exists(dst / "constant" / "polyMesh" / "points.gz")) {
-    const std::string cmd = "WM_PROJECT_DIR=/usr/share/openfoam blockMesh -case '" + dst.string() + "' > '" +
-                            (dst / "log.blockMesh").string() + "' 2>&1";
     out << "coupler: blockMesh -case " << dst.string() << "\n" << std::flush;
-    const int status = std::system(cmd.c_str());
+    const int status = runToFile({"blockMesh", "-case", dst.string()}, (dst / "log.blockMesh").string(),
+                                 {"WM_PROJECT_DIR=/usr/share/openfoam"});
     if (status != 0) {
-      std::string log = slurp(dst / "log.blockMesh");
+      std::string log = core::readTextFile(dst / "log.blockMesh");
       if (log.size() > 2000) log = log.substr(log.size() - 2000);
       throw std::runtime_error("coupler run: blockMesh failed for " + dst.string() + ":\n" + log);
     }

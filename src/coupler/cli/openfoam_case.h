@@ -2,9 +2,10 @@
 /// @brief The OpenFOAM side of `coupler run` for coupling.fluid: openfoam.
 ///
 /// The case named by coupling.interface.case (relative to the scene file) is copied fresh to
-/// <output.directory>/<case name>, its system/controlDict gets the mpmiceAdapter function object
+/// <output.directory>/<case name> (never over the case itself: copyCaseFresh), its system/controlDict gets the mpmiceAdapter function object
 /// (library, scene), and blockMesh builds its mesh when the case has none. The solver then runs
 /// in that copy (`<solver> -case <copy>`), serial, as one participant of the MPMD launch.
+#include <filesystem>
 #include <ostream>
 #include <string>
 
@@ -23,6 +24,11 @@ std::string withFunctionObject(const std::string& controlDict, const std::string
 /// blockMesh fails (with the tail of its log).
 std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                                 std::ostream& out);
+
+/// Copies the case folder `source` to `target`, replacing an earlier copy made by coupler run.
+/// Throws std::invalid_argument, deleting nothing, when target is, contains or lies inside source,
+/// or when target exists and is not such a copy.
+void copyCaseFresh(const std::filesystem::path& source, const std::filesystem::path& target);
 
 /// The adapter library under a build directory.
 std::string adapterLibraryPath(const std::string& binDir);

@@ -1,14 +1,23 @@
 #include "coupler/cli/run_command.h"
 
+#include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <memory>
+#include <optional>
+#include <poll.h>
 #include <regex>
 #include <set>
 #include <sstream>
-#include <sys/wait.h>
+#include <unistd.h>
 
 #include "coupler/cli/openfoam_case.h"
+#include "coupler/cli/process.h"
+#include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
 
 #ifndef MPMICE_MPIRUN_PATH
@@ -19,15 +28,7 @@ namespace mpmice::coupler {
 
 namespace fs = std::filesystem;
 
-std::string LaunchPlan::commandLine() const {
-  std::string s;
-  for (const auto& a : argv) {
-    if (!s.empty()) s += ' ';
-    const bool quote = a.find_first_of(" \t'\"") != std::string::npos;
-    s += quote ? "'" + a + "'" : a;
-  }
-  return s;
-}
+std::string LaunchPlan::commandLine() const { return shellLine(argv); }
 
 std::string LaunchPlan::describeWorldRank(int worldRank) const {
   int first = 0;
@@ -90,6 +91,93 @@ std::string ownBinDir() {
   return exe.parent_path().parent_path().string();  // <bin>/coupler/coupler -> <bin>
 }
 
+volatile std::sig_atomic_t g_stopSignal = 0;
+
+std::string signalName(int sig) {
+  switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    default: return "signal " + std::to_string(sig);
+  }
+}
+
+extern "C" void recordStopSignal(int sig) { g_stopSignal = sig; }
+
+/// SIGINT and SIGTERM recorded (not fatal) while it lives; the previous handlers restored after.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stopSignal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = recordStopSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;  // no SA_RESTART: poll() returns at once
+    sigaction(SIGINT, &sa, &oldInt_);
+    sigaction(SIGTERM, &sa, &oldTerm_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &oldInt_, nullptr);
+    sigaction(SIGTERM, &oldTerm_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  struct sigaction oldInt_ {}, oldTerm_ {};
+};
+
+/// Runs the launch without a shell, streaming its output through `out`. SIGINT/SIGTERM to the
+/// coupler go to the launch's process group; the coupler waits for it (SIGKILL after 10 s).
+int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
+  const StopSignals signals;
+  Process launch(plan.argv);
+  std::string all;
+  char buf[4096];
+  int forwarded = 0;
+  auto forwardedAt = std::chrono::steady_clock::now();
+  bool killed = false;
+  std::optional<std::chrono::steady_clock::time_point> endedAt;
+  for (;;) {
+    if (g_stopSignal != 0 && forwarded == 0) {
+      forwarded = g_stopSignal;
+      forwardedAt = std::chrono::steady_clock::now();
+      err << "coupler: " << signalName(forwarded) << " received: stopping the launch\n" << std::flush;
+      launch.signalGroup(forwarded);
+    }
+    if (forwarded != 0 && !killed && std::chrono::steady_clock::now() - forwardedAt > std::chrono::seconds(10)) {
+      err << "coupler: the launch did not end within 10 s of " << signalName(forwarded) << ": killing it\n";
+      launch.signalGroup(SIGKILL);
+      killed = true;
+    }
+    // After mpirun has ended, what it left in the pipe is read for up to 1 s (a process that
+    // kept the pipe open is killed with the group by wait()).
+    if (!endedAt && launch.ended()) endedAt = std::chrono::steady_clock::now();
+    if (endedAt && std::chrono::steady_clock::now() - *endedAt > std::chrono::seconds(1)) break;
+    pollfd pfd{launch.output(), POLLIN, 0};
+    const int ready = poll(&pfd, 1, 200);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;
+    const ssize_t n = read(launch.output(), buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // end of output: every writer has closed the pipe
+    out.write(buf, n);
+    out << std::flush;
+    all.append(buf, static_cast<std::size_t>(n));
+    if (all.size() > (1u << 20)) all.erase(0, all.size() - (1u << 19));  // keep the tail
+  }
+  const int code = launch.wait();
+  if (forwarded != 0) {
+    err << "coupler: stopped by " << signalName(forwarded) << "; the launch ended with status " << code << "\n";
+    return 128 + forwarded;
+  }
+  if (code != 0) {
+    err << "coupler: the launch ended with status " << code << "\n";
+    for (const auto& line : explainFailure(plan, all)) err << line << "\n";
+    return code;
+  }
+  return 0;
+}
+
 int parseRanks(const std::string& opt, const std::string& v) {
   try {
     std::size_t used = 0;
@@ -127,6 +215,16 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
+    // The output-directory lock, before anything is written (core/io/run_lock.h); the launch's
+    // programs accept it as their coupler's.
+    std::unique_ptr<core::RunLock> lock;
+    if (!dryRun) {
+      try {
+        lock = core::lockOutputDirectory(core::Comm(), scene, "coupler", &err);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("coupler run: ") + e.what());
+      }
+    }
     std::string fluidCase;
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
     const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
@@ -143,23 +241,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     // Debian's OpenFOAM finds its etc/ through WM_PROJECT_DIR (exported to the launch by -x).
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam) setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
 
-    FILE* pipe = popen((plan.commandLine() + " 2>&1").c_str(), "r");
-    if (!pipe) throw std::runtime_error("coupler run: could not start " + plan.argv[0]);
-    std::string all;
-    char buf[4096];
-    while (fgets(buf, sizeof(buf), pipe)) {
-      out << buf << std::flush;
-      all += buf;
-      if (all.size() > (1u << 20)) all.erase(0, all.size() - (1u << 19));  // keep the tail
-    }
-    const int status = pclose(pipe);
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    if (code != 0) {
-      err << "coupler: the launch ended with status " << code << "\n";
-      for (const auto& line : explainFailure(plan, all)) err << line << "\n";
-      return code;
-    }
-    return 0;
+    return runLaunch(plan, out, err);
   } catch (const core::SceneError& e) {
     err << e.what() << "\n";
     return 2;

@@ -12,6 +12,11 @@
 /// override them. --dry-run prints the line without running it. The launch's output streams
 /// through; when it ends non-zero, the world ranks named in mpirun's messages are translated
 /// into participants ("world rank 1 is ice_solver rank 0").
+///
+/// The launch starts without a shell (cli/process.h: argv through posix_spawn, its own process
+/// group); the printed line is shell-quoted. SIGINT/SIGTERM to the coupler are forwarded to the
+/// launch's group, the coupler waits for it to end (SIGKILL after 10 s) and exits 128 + signal,
+/// "coupler: stopped by SIGTERM". The output directory is locked for the run (core/io/run_lock.h).
 #include <ostream>
 #include <string>
 #include <vector>

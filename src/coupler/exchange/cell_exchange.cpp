@@ -28,7 +28,7 @@ void CellExchange::send(const std::vector<const core::Field*>& fields, int tag, 
     MPI_Isend(bufs[n].data(), static_cast<int>(bufs[n].size()), MPI_DOUBLE, overlaps_[n].peerRank, tag,
               participant_.inter(), &reqs[n]);
   }
-  waitAll(reqs, participant_.timeout(), participant_.peerName(), "receipt of " + what);
+  waitAll(reqs, participant_.timeout(), participant_.peerName(), what, Waiting::ForReceipt);
 }
 
 void CellExchange::receive(const std::vector<core::Field*>& fields, int tag, const std::string& what) const {

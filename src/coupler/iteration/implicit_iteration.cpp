@@ -1,5 +1,6 @@
 #include "coupler/iteration/implicit_iteration.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -47,6 +48,7 @@ ImplicitIteration::ImplicitIteration(const core::CouplingSpec& spec, std::vector
   a.relaxation = spec.acceleration.relaxation;
   a.reuse = spec.acceleration.reuse;
   a.filter = spec.acceleration.filter;
+  a.precondition = spec.acceleration.preconditioner;
   acceleration_ = makeAcceleration(a, comm);
 }
 
@@ -99,6 +101,19 @@ StepReport ImplicitIteration::iterate(const std::vector<DataView>& views, const 
                                       const std::function<void()>& pass, const std::function<void()>& restore,
                                       const std::function<void(bool)>& verdict) {
   beginStep();
+  // The iterate's layout for the acceleration's preconditioner: one group per field name.
+  std::vector<Segment> segments;
+  std::vector<std::string> names;
+  Eigen::Index offset = 0;
+  for (const auto& v : views) {
+    const auto at = std::find(names.begin(), names.end(), v.name);
+    const int group = static_cast<int>(at - names.begin());
+    if (at == names.end()) names.push_back(v.name);
+    const auto n = static_cast<Eigen::Index>(v.values.size());
+    segments.push_back({offset, n, group});
+    offset += n;
+  }
+  acceleration_->setSegments(segments);
   Eigen::VectorXd x = pack(views);
   StepReport report;
   for (int k = 1;; ++k) {

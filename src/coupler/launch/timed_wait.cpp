@@ -6,7 +6,17 @@
 
 namespace mpmice::coupler {
 
-void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what) {
+std::string timeoutMessage(const std::string& peer, const std::string& what, double timeout, Waiting waiting) {
+  std::ostringstream os;
+  if (waiting == Waiting::ForReceipt) os << "coupler: " << what << " sent, but no receipt";
+  else os << "coupler: no " << what;
+  os << " from participant '" << peer << "'";
+  os << " within " << timeout << " s (coupling.timeout); it has stopped or hangs";
+  return os.str();
+}
+
+void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what,
+             Waiting waiting) {
   if (reqs.empty()) return;
   const auto start = std::chrono::steady_clock::now();
   int spins = 0;
@@ -21,10 +31,7 @@ void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& 
           MPI_Cancel(&r);
           MPI_Request_free(&r);
         }
-      std::ostringstream os;
-      os << "coupler: no " << what << " from participant '" << peer << "' within " << timeout
-         << " s (coupling.timeout); it has stopped or hangs";
-      throw CouplingTimeout(os.str());
+      throw CouplingTimeout(timeoutMessage(peer, what, timeout, waiting));
     }
     // Spin briefly for low latency, then yield the core (2 cores, several ranks each).
     if (++spins > 200) std::this_thread::sleep_for(std::chrono::microseconds(spins > 2000 ? 500 : 20));

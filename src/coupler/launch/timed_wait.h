@@ -16,7 +16,15 @@ class CouplingTimeout : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Waits for all requests; throws CouplingTimeout after `timeout` seconds.
-void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what);
+/// What a wait is for: data from the peer, or the peer taking what this side sends.
+enum class Waiting { ForData, ForReceipt };
+
+/// The timeout message: "coupler: no <what> from participant '<peer>' within ..." when waiting for
+/// data, "coupler: <what> sent, but no receipt from participant '<peer>' within ..." when sending.
+std::string timeoutMessage(const std::string& peer, const std::string& what, double timeout, Waiting waiting);
+
+/// Waits for all requests; throws CouplingTimeout (timeoutMessage) after `timeout` seconds.
+void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what,
+             Waiting waiting = Waiting::ForData);
 
 }  // namespace mpmice::coupler

@@ -2,13 +2,15 @@
 //   kbar dp - dt^2 div( beta_f grad dp ) = -dt div U*,    beta_f = sum_r theta_r,f phi_r,f
 // (theta upwinded by the face velocity u*, phi the face mobility with the exchange at faces),
 // a symmetric positive definite system: ice/linear's Jacobi-preconditioned CG over all ranks
-// (`cg`, with ghost exchange per product) or Eigen's BiCGSTAB on the assembled stencil
+// (`cg`, with ghost exchange per product), hypre's structured PCG preconditioned by PFMG or SMG
+// on the assembled stencil over all ranks (`pfmg_pcg`, `smg_pcg`) or Eigen's BiCGSTAB on it
 // (`bicgstab`, one rank). Then u_f,r = u*_f,r - dt phi_r,f grad dp and p = p_eq + dp.
 #include <cmath>
 #include <stdexcept>
 
 #include "ice/exchange/face_exchange.h"
 #include "ice/linear/bicgstab.h"
+#include "ice/linear/hypre_struct_pcg.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
 
@@ -67,22 +69,33 @@ void IceSolver::assembleSemiImplicit() {
 void IceSolver::solvePressureSystem() {
   SemiImplicitScratch& S = semi_;
   Field& x = st_.dp;
-  if (bicgstab_) {
-    std::array<bool, 6> fixedSide{};
-    for (int s = 0; s < 6; ++s) fixedSide[s] = bc_.fixedPressure(s);
-    const linear::LinearResult res = linear::solveBicgstab(S.stencil, mesh_.cellBox(), decomp_.periodic(), fixedSide,
-                                                           S.rhs, x, solverTol_, solverMaxIt_);
-    if (!res.converged)
-      throw std::runtime_error("ice: semi-implicit pressure (bicgstab) did not converge: error " +
-                               std::to_string(res.error) + " after " + std::to_string(res.iterations) +
-                               " iterations");
-    return;
+  linear::StencilBoundary bc{mesh_.cellBox(), decomp_.periodic(), {}};
+  for (int s = 0; s < 6; ++s) bc.fixedSide[s] = bc_.fixedPressure(s);
+  linear::LinearResult res;
+  switch (linearSolver_) {
+    case LinearSolver::Cg:
+      if (!S.cg) S.cg = std::make_unique<linear::JacobiCg>(comm_);
+      res = S.cg->solve(S.stencil, S.rhs, x, owned_, solverTol_, solverMaxIt_);
+      break;
+    case LinearSolver::Bicgstab:
+      res = linear::solveBicgstab(S.stencil, bc, S.rhs, x, solverTol_, solverMaxIt_);
+      break;
+    case LinearSolver::PfmgPcg:
+    case LinearSolver::SmgPcg:
+      if (!S.hypre)
+        S.hypre = std::make_unique<linear::HypreStructPcg>(comm_, linearSolver_ == LinearSolver::PfmgPcg
+                                                                      ? linear::StructPreconditioner::Pfmg
+                                                                      : linear::StructPreconditioner::Smg);
+      res = S.hypre->solve(S.stencil, bc, S.rhs, x, solverTol_, solverMaxIt_);
+      break;
   }
-  if (!S.cg) S.cg = std::make_unique<linear::JacobiCg>(comm_);
-  if (!S.cg->solve(S.stencil, S.rhs, x, owned_, solverTol_, solverMaxIt_).converged)
-    throw std::runtime_error("ice: semi-implicit pressure (cg) did not reach the tolerance " +
+  linIters_ = res.iterations;
+  linItersTotal_ += res.iterations;
+  if (!res.converged)
+    throw std::runtime_error("ice: semi-implicit pressure (" + linearSolverName_ + ") did not reach the tolerance " +
                              std::to_string(solverTol_) + " in " + std::to_string(solverMaxIt_) +
-                             " iterations (ice.solver_max_iterations)");
+                             " iterations (ice.solver_max_iterations): relative residual " +
+                             std::to_string(res.error) + " after " + std::to_string(res.iterations));
 }
 
 void IceSolver::solveSemiImplicit() {

@@ -109,6 +109,11 @@ class IceSolver {
   [[nodiscard]] std::vector<core::Field> outputFields() const;
   /// Material density m/V (per unit total volume) of material m in owned cell (i,j,k).
   [[nodiscard]] double density(int m, int i, int j, int k) const;
+  /// Iterations of the last step's semi-implicit pressure solve (0 for the explicit pressure)
+  /// and their sum over every step so far; the same on every rank.
+  [[nodiscard]] int linearIterations() const { return linIters_; }
+  [[nodiscard]] long linearIterationsTotal() const { return linItersTotal_; }
+  [[nodiscard]] bool semiImplicit() const { return semiImplicit_; }
   /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
   [[nodiscard]] long energyFallbacks() const { return fallbacks_; }
 
@@ -143,7 +148,11 @@ class IceSolver {
   std::unique_ptr<EquilibriumPressure> equil_;
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
-  bool secondOrder_ = true, semiImplicit_ = false, bicgstab_ = false;
+  bool secondOrder_ = true, semiImplicit_ = false;
+  enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;
+  std::string linearSolverName_ = "pfmg_pcg";
+  int linIters_ = 0;
+  long linItersTotal_ = 0;
   int limiter_ = 1;
   double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
   int solverMaxIt_ = 1000;

@@ -54,10 +54,15 @@ void IceSolver::initialize(const core::Scene& scene) {
     throw std::invalid_argument("ice.pressure_solver: unknown value '" + o.pressure_solver +
                                 "'; valid: explicit, semi_implicit");
   semiImplicit_ = o.pressure_solver == "semi_implicit";
-  if (o.linear_solver != "cg" && o.linear_solver != "bicgstab")
-    throw std::invalid_argument("ice.linear_solver: unknown value '" + o.linear_solver + "'; valid: cg, bicgstab");
-  bicgstab_ = o.linear_solver == "bicgstab";
-  if (semiImplicit_ && bicgstab_ && comm_.size() > 1)
+  if (o.linear_solver == "cg") linearSolver_ = LinearSolver::Cg;
+  else if (o.linear_solver == "bicgstab") linearSolver_ = LinearSolver::Bicgstab;
+  else if (o.linear_solver == "pfmg_pcg") linearSolver_ = LinearSolver::PfmgPcg;
+  else if (o.linear_solver == "smg_pcg") linearSolver_ = LinearSolver::SmgPcg;
+  else
+    throw std::invalid_argument("ice.linear_solver: unknown value '" + o.linear_solver +
+                                "'; valid: cg, bicgstab, pfmg_pcg, smg_pcg");
+  linearSolverName_ = o.linear_solver;
+  if (semiImplicit_ && linearSolver_ == LinearSolver::Bicgstab && comm_.size() > 1)
     throw std::invalid_argument("ice.linear_solver: bicgstab (Eigen, assembled) runs on one rank; use cg in parallel");
   solverTol_ = o.solver_tolerance;
   solverMaxIt_ = o.solver_max_iterations;

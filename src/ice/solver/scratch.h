@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/field/field.h"
+#include "ice/linear/hypre_struct_pcg.h"
 #include "ice/linear/jacobi_cg.h"
 #include "ice/linear/linear_operator.h"
 
@@ -21,6 +22,7 @@ struct SemiImplicitScratch {
   linear::FaceStencil stencil;
   core::Field rhs;  // -dt div U* per owned cell
   std::unique_ptr<linear::JacobiCg> cg;
+  std::unique_ptr<linear::HypreStructPcg> hypre;  // pfmg_pcg, smg_pcg: grid and matrix kept
 };
 
 /// The quantities the advection carries, as components of its accumulators and face fluxes.

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/io/csv_writer.h"
+#include "core/io/output_selection.h"
 #include "core/io/output_writer.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
@@ -35,10 +36,15 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
                                             std::vector<std::string>{"step", "time", "mass", "momentum_x",
                                                                      "momentum_y", "momentum_z", "energy"});
   }
+  // output.fields: refuse a name this program does not offer, before the first step.
+  std::vector<std::string> materials, offered;
+  for (const auto& m : scene.materials) materials.push_back(m.name);
+  for (const auto& f : solver.outputFields()) offered.push_back(f.name());
+  core::checkOutputFields(scene.output.fields, offered, materials, "ice_solver");
   auto output = [&] {
     const Totals t = solver.totals();  // collective
     if (!writer) return;
-    const std::vector<core::Field> fields = solver.outputFields();
+    const std::vector<core::Field> fields = core::selectFields(solver.outputFields(), scene.output.fields, materials);
     std::vector<const core::Field*> ptrs;
     for (const auto& f : fields) ptrs.push_back(&f);
     writer->writeStep(static_cast<int>(solver.steps()), solver.time(), ptrs);
@@ -54,7 +60,9 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     double maxIt = 0;
     const auto& it = solver.state().iters;
     core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });
-    progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), {{"p_iters", comm.max(maxIt)}});
+    core::Progress::Extras extras{{"p_iters", comm.max(maxIt)}};
+    if (solver.semiImplicit()) extras.emplace_back("lin_iters", double(solver.linearIterations()));
+    progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), extras);
     if (outputs.due(solver.time())) output();
   }
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) output();  // the last step

@@ -1,9 +1,14 @@
 // `coupler run`: the composed MPMD line and the translation of failed world ranks to participants.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 #include "coupler/cli/openfoam_case.h"
+#include "coupler/cli/process.h"
+#include "coupler/launch/timed_wait.h"
 #include "coupler/cli/run_command.h"
 #include "core/scene/scene.h"
 
@@ -105,4 +110,78 @@ TEST(CoupleRun, AMissingOpenFoamCaseNamesTheSceneKey) {
     EXPECT_NE(msg.find("coupling.interface.case: 'no/such/case'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("no system/controlDict"), std::string::npos) << msg;
   }
+}
+
+TEST(CoupleRun, StartsWithoutAShellAndPrintsTheLineShellQuoted) {
+  const auto s = tinyScene();
+  const std::string hostile = "x;touch${IFS}INJECTED;.yaml";
+  const auto plan = coupler::composeLaunch(s, hostile, "/b", "/x/mpirun", 1, 1);
+  // The argument reaches the program as one word; the printed line quotes it for copying.
+  EXPECT_EQ(plan.argv[4], hostile);
+  EXPECT_EQ(plan.commandLine(), "/x/mpirun -np 1 /b/mpm_solver/mpm_solver 'x;touch${IFS}INJECTED;.yaml' : -np 1 "
+                                "/b/ice_solver/ice_solver 'x;touch${IFS}INJECTED;.yaml'");
+  EXPECT_EQ(coupler::shellQuote("it's (a) & $HOME.yaml"), "'it'\\''s (a) & $HOME.yaml'");
+  EXPECT_EQ(coupler::shellQuote(""), "''");
+  EXPECT_EQ(coupler::shellQuote("dir/a-b_c.yaml"), "dir/a-b_c.yaml");  // plain words stay bare
+}
+
+TEST(CoupleRun, TheLaunchReceivesEveryArgumentAsOneWordAndIsTracked) {
+  // A real process: every argument one word, output through the pipe, the exit status.
+  coupler::Process p({"/bin/sh", "-c", "printf '%s|' \"$@\"; exit 3", "sh", "x;touch${IFS}INJECTED;.yaml", "a b",
+                      "'q'"});
+  std::string text;
+  char buf[256];
+  for (ssize_t n; (n = read(p.output(), buf, sizeof buf)) > 0;) text.append(buf, static_cast<std::size_t>(n));
+  EXPECT_EQ(text, "x;touch${IFS}INJECTED;.yaml|a b|'q'|");
+  EXPECT_EQ(p.wait(), 3);
+  EXPECT_THROW(coupler::Process({"/no/such/program"}), std::runtime_error);
+}
+
+namespace {
+/// A minimal case folder (system/controlDict) under a fresh directory.
+std::filesystem::path caseFolder(const std::string& name) {
+  const auto root = std::filesystem::temp_directory_path() / ("mpmice_case_copy_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root / "fluid" / "system");
+  std::ofstream(root / "fluid" / "system" / "controlDict") << "endTime 1;\n";
+  return root;
+}
+}  // namespace
+
+TEST(CoupleRun, TheCaseCopyNeverDeletesTheSourceCase) {
+  const auto root = caseFolder("never_deletes");
+  const auto src = root / "fluid";
+  auto refused = [&](const std::filesystem::path& dst, const std::string& how) {
+    try {
+      coupler::copyCaseFresh(src, dst);
+      ADD_FAILURE() << "expected a refusal for " << dst;
+    } catch (const std::invalid_argument& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("the OpenFOAM case copy"), std::string::npos) << msg;
+      EXPECT_NE(msg.find(how + " the source case " + src.string() + "; refusing to overwrite it"), std::string::npos)
+          << msg;
+    }
+    EXPECT_TRUE(std::filesystem::exists(src / "system" / "controlDict")) << "the source case was deleted";
+  };
+  refused(root / "." / "fluid", "is");    // output.directory: . with the case beside the scene
+  refused(src / "out" / "fluid", "lies inside");
+  refused(root, "contains");
+  // A fresh copy elsewhere; a second run replaces its own earlier copy, not a foreign folder.
+  coupler::copyCaseFresh(src, root / "output" / "fluid");
+  EXPECT_TRUE(std::filesystem::exists(root / "output" / "fluid" / "system" / "controlDict"));
+  coupler::copyCaseFresh(src, root / "output" / "fluid");
+  std::filesystem::create_directories(root / "mine" / "fluid");
+  std::ofstream(root / "mine" / "fluid" / "notes.txt") << "keep\n";
+  EXPECT_THROW(coupler::copyCaseFresh(src, root / "mine" / "fluid"), std::invalid_argument);
+  EXPECT_TRUE(std::filesystem::exists(root / "mine" / "fluid" / "notes.txt"));
+  std::filesystem::remove_all(root);
+}
+
+TEST(CoupleRun, ATimeoutNamesWhatWasAwaitedOnce) {
+  // Sending: the peer did not take the data ("no receipt of receipt of ..." was the old wording).
+  EXPECT_EQ(coupler::timeoutMessage("ice", "solid state", 3, coupler::Waiting::ForReceipt),
+            "coupler: solid state sent, but no receipt from participant 'ice' within 3 s (coupling.timeout); it has "
+            "stopped or hangs");
+  EXPECT_EQ(coupler::timeoutMessage("b", "solid state", 3, coupler::Waiting::ForData),
+            "coupler: no solid state from participant 'b' within 3 s (coupling.timeout); it has stopped or hangs");
 }

@@ -359,3 +359,26 @@ TEST(OutputReaderErrors, MissingFilesDatasetsAndOutOfRangeReadsNameWhatFailed) {
   EXPECT_NE(message([&] { r.readFieldInto(two, d.ownedBox(comm.rank(), Centering::Cell)); }).find("1 components"),
             std::string::npos);
 }
+
+TEST(OutputWriterFiles, AKilledWriteNeverLeavesAStepUnderItsFinalName) {
+  const Comm& comm = mpmice::test::comm();
+  ScratchDir dir("partial");
+  const Decomposition d(testMesh(2), comm.size());
+  OutputWriter w(comm, d, dir.str(), "part");
+  const Field f = makeField("rho", d, Centering::Cell, 1, 0);
+  // A complete step: the final name only, no temporary file left.
+  const std::string done = w.writeStep(0, 0.0, {&f});
+  EXPECT_TRUE(fs::exists(done));
+  EXPECT_FALSE(fs::exists(done + ".part"));
+  EXPECT_FALSE(fs::exists(w.xdmfPath() + ".tmp"));
+  // A write that cannot finish (its temporary name is taken by a folder): nothing appears under
+  // the step's name, and the index still lists the complete step only.
+  const std::string step1 = (fs::path(dir.str()) / "part_000001.h5").string();
+  if (comm.root()) fs::create_directories(step1 + ".part");
+  comm.barrier();
+  EXPECT_ANY_THROW(w.writeStep(1, 1.0, {&f}));
+  EXPECT_FALSE(fs::exists(step1));
+  std::ifstream in(w.xdmfPath());
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(xml.find("part_000001.h5"), std::string::npos);
+}

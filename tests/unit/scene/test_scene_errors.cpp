@@ -44,6 +44,17 @@ std::vector<BadScene> badScenes() {
   return {
       {"unknown top-level key", kBase + "gravty: [0]\n",
        {"test.yaml:7:1: gravty: unknown key 'gravty' at the top level", "did you mean 'gravity'?"}},
+      {"spacing far below the mesh (cells per direction overflow an int)",
+       "mesh: {dim: 1, lower: [0], upper: [1], spacing: 1.0e-12}\n" + kTime + kAir + kRegion,
+       {"test.yaml:1:", "mesh.spacing", "cells in x, more than the 2147483647 one direction can hold"}},
+      {"cell count overflows 64 bits",
+       "mesh: {dim: 3, lower: [0, 0, 0], upper: [1, 1, 1], cells: [2147483647, 2147483647, 2147483647]}\n" + kTime +
+           kAir + kRegion,
+       {"test.yaml:1:", "mesh.cells", "the mesh would have more than 9223372036854775807 cells"}},
+      {"scene larger than the machine's memory",
+       "mesh: {dim: 2, lower: [0, 0], upper: [1, 1], cells: [200000, 200000]}\n" + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1}\n",
+       {"test.yaml:1:", "the scene needs 4e+10 cells", "GiB this machine has available", "coarsen the mesh"}},
       {"misspelled EOS",
        kMesh + kTime + "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gass, gamma: 1.4}}\n" + kRegion,
        {"test.yaml:4:", "materials[0].eos.type: unknown equation of state 'ideal_gass'",
@@ -253,6 +264,39 @@ TEST(SceneErrors, ErrorCarriesLocationAndKey) {
     EXPECT_EQ(e.where().line, 2);
     EXPECT_EQ(e.where().column, 21);
     EXPECT_EQ(e.key(), "time.cfl");
+  }
+}
+
+}  // namespace
+}  // namespace mpmice::core
+
+namespace mpmice::core {
+namespace {
+
+// A hostile scene: 200,000 keys in one mapping, the duplicate among them named (the look-up is a
+// hash map now, not a comparison of every pair: docs/scene-reference.md gives the timing), and a
+// 1 MB value echoed capped, not whole.
+TEST(HostileScene, ManyKeysReadFastAndTheDuplicateIsNamed) {
+  std::string yaml = kBase + "output:\n";
+  for (int i = 0; i < 200000; ++i) yaml += "  k" + std::to_string(i) + ": 1\n";
+  yaml += "  k7: 2\n";
+  try {
+    (void)parseScene(yaml, "test.yaml");
+    FAIL() << "a duplicate key was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("duplicate key 'k7'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HostileScene, AHugeValueIsEchoedCapped) {
+  const std::string huge(1 << 20, 'x');
+  try {
+    (void)parseScene(kMesh + "time: {end: " + huge + "}\n" + kAir + kRegion, "test.yaml");
+    FAIL() << "a non-number end time was accepted";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_LT(m.size(), 400u) << m.substr(0, 400);
+    EXPECT_NE(m.find("(1048576 characters)"), std::string::npos) << m.substr(0, 400);
   }
 }
 

@@ -12,7 +12,8 @@
 
 namespace mpmice::coupler {
 
-/// Runs the scene to its end on `comm`; returns the exit status.
+/// Runs the scene to its end on `comm`; returns the exit status. A scene with only solids or
+/// only fluids runs that one solver alone (with a line saying so).
 int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream& log);
 
 }  // namespace mpmice::coupler

@@ -9,6 +9,7 @@
 
 #include "core/health/health.h"
 #include "core/io/csv_writer.h"
+#include "core/io/output_selection.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
 #include "couplings/volume/common/run_output.h"
@@ -51,14 +52,16 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     progress.start(scene.name + " (" + label + ", schedule " + std::string(core::name(scene.coupling.schedule)) +
                        ", " + std::to_string(particles) + " particles)",
                    scene.mesh.describe(), comm.size());
+  std::vector<std::string> materials;  // output.fields: each side writes its part of the list
+  for (const auto& m : scene.materials) materials.push_back(m.name);
   RunOutput out(scene, comm, decomp, both ? "" : sides.solid ? "_solid" : "_fluid", sides.solid != nullptr);
   auto output = [&](long n, double t) {
     std::vector<core::Field> fields;
     std::vector<const core::Field*> ptrs;
-    if (sides.fluid) fields = sides.fluid->solver().outputFields();
+    if (sides.fluid) fields = core::selectFields(sides.fluid->solver().outputFields(), scene.output.fields, materials);
     for (const auto& f : fields) ptrs.push_back(&f);
     core::ParticleOutput parts;
-    if (sides.solid) parts = sides.solid->particleOutput();
+    if (sides.solid) parts = core::selectParticles(sides.solid->particleOutput(), scene.output.fields);
     out.writeFields(n, t, ptrs, sides.solid ? &parts : nullptr);
     SideTotals solid, fluid;
     if (sides.solid) solid = sides.solid->totals();
@@ -140,7 +143,10 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     }
     if (probes) probes->record(sides.solid->solver());
     if (outputs.due(t)) output(n, t);
-    progress.step(static_cast<int>(n), t, dt, {{"iters", double(r.iterations)}});
+    core::Progress::Extras extras{{"iters", double(r.iterations)}};
+    if (sides.fluid && sides.fluid->solver().semiImplicit())
+      extras.emplace_back("lin_iters", double(sides.fluid->solver().linearIterations()));
+    progress.step(static_cast<int>(n), t, dt, extras);
   }
   // 3. The last step is always written.
   if (!outputs.written(t) && outputs.due(t, true)) output(n, t);
@@ -153,6 +159,11 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     log << "coupling: this process computed " << computeTotal << " s and spent "
         << transport.seconds() - exchangeStart << " s in exchange (" << (both ? "in memory" : "rank to rank")
         << ")\n";
+  }
+  if (comm.root() && sides.fluid && sides.fluid->solver().semiImplicit()) {
+    const long lin = sides.fluid->solver().linearIterationsTotal();
+    log << "ice: semi-implicit pressure (" << scene.ice.linear_solver << "), " << lin << " linear iterations in " << n
+        << " steps (" << double(lin) / double(std::max(1L, n)) << " per step)\n";
   }
   if (both)
     progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()));

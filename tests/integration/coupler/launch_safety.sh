@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `coupler run` on hostile file names, stopped by a signal, and started twice on one scene.
+#   launch_safety.sh COUPLER BIN_DIR SHORT_SCENE LONG_SCENE MODE   (LONG_SCENE: its time.end is moved far away)
+# MODE no_shell:       scenes named x;touch${IFS}INJECTED;.yaml, with ( & ' $HOME, run to their end
+#                      (exit 0) and nothing is injected.
+# MODE sigterm:        SIGTERM to a running `coupler run` ends it within a few seconds, non-zero,
+#                      naming the signal, and no mpirun / mpm_solver / ice_solver of it remains.
+# MODE second_run:     a second `coupler run` of the scene into the same output directory is
+#                      refused at start naming the holder (pid, host); a stale lock is taken over.
+set -u
+coupler=$1 bin=$2 scene=$3 long=$4 mode=$5
+work=$(mktemp -d)
+trap 'pkill -KILL -f -- "$work/" 2>/dev/null; rm -rf "$work"' EXIT
+cd "$work" || exit 1
+fail() { echo "FAIL: $*"; exit 1; }
+# A scene running long enough to be caught: time.end far away, no step limit.
+long_scene() { sed -e 's/^  end: .*/  end: 1.0e3/' "$long" > "$1"; }
+case "$mode" in
+  no_shell)
+    for name in 'x;touch${IFS}INJECTED;.yaml' "a (b) & c's \$HOME.yaml"; do
+      cp "$scene" "$work/$name"
+      out=$("$coupler" run --bin-dir "$bin" "$name" 2>&1); status=$?
+      echo "$out" | grep -v '^\[' | tail -5
+      [ $status -eq 0 ] || fail "exit status $status for '$name'"
+      [ ! -e INJECTED ] && [ ! -e "$HOME/INJECTED" ] || fail "the scene name ran a command"
+      quoted="'${name//\'/\'\\\'\'}'"
+      grep -qF -- "$quoted" <<<"$out" || fail "the printed line lacks the quoted name $quoted"
+    done ;;
+  sigterm)
+    long_scene "$work/long.yaml"
+    "$coupler" run --bin-dir "$bin" "$work/long.yaml" > log 2>&1 &
+    pid=$!
+    for _ in $(seq 100); do pgrep -f -- "ice_solver $work/long.yaml" > /dev/null && break; sleep 0.1; done
+    pgrep -f -- "ice_solver $work/long.yaml" > /dev/null || { cat log; fail "the launch did not start"; }
+    sleep 1
+    kill -TERM $pid
+    for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+    kill -0 $pid 2>/dev/null && fail "coupler run still runs 10 s after SIGTERM"
+    wait $pid; status=$?
+    grep -v '^\[' log | tail -5
+    echo "exit status: $status"
+    [ $status -ne 0 ] || fail "expected a non-zero exit"
+    grep -q "coupler: stopped by SIGTERM" log || fail "the output does not name SIGTERM"
+    sleep 0.5
+    left=$(pgrep -af -- "$work/long.yaml")
+    [ -z "$left" ] || fail "left running: $left" ;;
+  second_run)
+    long_scene "$work/long.yaml"
+    "$coupler" run --bin-dir "$bin" "$work/long.yaml" > first.log 2>&1 &
+    pid=$!
+    for _ in $(seq 100); do pgrep -f -- "ice_solver $work/long.yaml" > /dev/null && break; sleep 0.1; done
+    lock=$(ls output/*.lock 2>/dev/null | head -1)
+    [ -n "$lock" ] || { cat first.log; fail "no lock in output/"; }
+    out=$("$coupler" run --bin-dir "$bin" "$work/long.yaml" 2>&1); status=$?
+    echo "$out"; echo "exit status: $status"
+    kill -TERM $pid; wait $pid
+    [ $status -ne 0 ] || fail "the second run was not refused"
+    grep -q "the output directory is in use: output/pressurized_cylinder.lock is held by pid $pid on host $(hostname) (coupler)" <<<"$out" ||
+      fail "the refusal does not name the holder"
+    # mpmice on the same scene while an MPMD launch of it runs: refused as well.
+    "$coupler" run --bin-dir "$bin" "$work/long.yaml" > first.log 2>&1 &
+    pid=$!
+    for _ in $(seq 100); do pgrep -f -- "ice_solver $work/long.yaml" > /dev/null && break; sleep 0.1; done
+    out=$(timeout 20 "$bin/coupler/mpmice" "$work/long.yaml" 2>&1); status=$?
+    echo "$out" | grep -v '^\['; echo "exit status: $status"
+    kill -TERM $pid; wait $pid
+    [ $status -ne 0 ] || fail "mpmice was not refused"
+    grep -q "mpmice: error: the output directory is in use: output/pressurized_cylinder" <<<"$out" || fail "mpmice's refusal"
+    # A stale lock (its process gone) is taken over with a note and the run goes on.
+    sh -c 'exit 0' & dead=$!; wait $dead
+    echo "$dead $(hostname) coupler" > output/pressurized_cylinder.lock
+    out=$("$coupler" run --bin-dir "$bin" "$scene" 2>&1); status=$?
+    echo "$out" | grep -v '^\[' | tail -5
+    [ $status -eq 0 ] || fail "the run with a stale lock failed ($status)"
+    grep -q "note: taking over the stale lock output/pressurized_cylinder.lock of pid $dead" <<<"$out" || fail "no note of the stale lock"
+    [ ! -e output/pressurized_cylinder.lock ] || fail "the lock was not released at the end" ;;
+esac
+echo PASS
