@@ -8,6 +8,16 @@
 
 namespace mpmice::coupler {
 
+namespace {
+std::string timeKeys(const core::TimeSpec& t) {
+  std::ostringstream o;
+  o.precision(17);
+  o << "cfl " << t.cfl << ", dt_max " << t.dt_max << ", dt_min " << t.dt_min << ", dt_initial " << t.dt_initial
+    << ", max_steps " << t.max_steps << ", dt_collapse_fraction " << t.dt_collapse_fraction;
+  return o.str();
+}
+}  // namespace
+
 HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
   std::ostringstream mesh, mats;
   mesh.precision(17);
@@ -21,6 +31,9 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
           {"scene hash (mesh, materials, boundary)", core::sceneHash(s)},
           {"schedule", std::string(core::name(s.coupling.schedule))},
           {"end time", std::to_string(s.time.end)},
+          // Both sides stop, step and judge a collapse by the same rules (a difference would
+          // let one side stop while the other waits).
+          {"time", timeKeys(s.time)},
           {"exchanged fields",
            "solid state: mass velocity temperature specific_volume | pressure force: pressure_force pressure | "
            "Lagrangian momentum: lagrangian_momentum | exchange increments: exchange_momentum exchange_energy"}};
