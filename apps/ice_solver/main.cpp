@@ -29,10 +29,16 @@ int main(int argc, char** argv) {
     if (session.world().root()) std::cerr << "usage: ice_solver scene.yaml\n";
     return 2;
   }
+  // Known once the launch is joined: in an MPMD launch an input error found by this program
+  // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
+  // would otherwise wait its coupling.timeout for a participant that has gone).
+  bool coupled = false, localRoot = session.world().root();
   try {
     // 1. The scene; join the launch.
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "ice", scene.coupling.timeout);
+    coupled = participant.coupled();
+    localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "ice_solver");
     if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
     return ice::runStandalone(scene, participant.local(), std::cout);  // 2.
@@ -42,8 +48,9 @@ int main(int argc, char** argv) {
   } catch (const core::HealthError& e) {  // every rank (of both programs, coupled) throws it: one prints
     if (e.reporter()) std::cerr << "ice_solver: error: " << e.what() << std::endl;
     return 1;
-  } catch (const std::invalid_argument& e) {  // bad input: every rank throws the same
-    if (session.world().root()) std::cerr << "ice_solver: error: " << e.what() << "\n";
+  } catch (const std::invalid_argument& e) {  // bad input: every rank of this program throws the same
+    if (localRoot) std::cerr << "ice_solver: error: " << e.what() << std::endl;
+    if (coupled) core::MpiSession::abortAll(1);  // only this side knows: end the launch now
     return 1;
   } catch (const std::exception& e) {  // may be one rank only (a coupling timeout): end the launch
     std::cerr << "ice_solver: error: " << e.what() << std::endl;

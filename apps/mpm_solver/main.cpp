@@ -31,10 +31,16 @@ int main(int argc, char** argv) {
     if (session.world().root()) std::fprintf(stderr, "usage: mpm_solver scene.yaml\n");
     return 2;
   }
+  // Known once the launch is joined: in an MPMD launch an input error found by this program
+  // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
+  // would otherwise wait its coupling.timeout for a participant that has gone).
+  bool coupled = false, localRoot = session.world().root();
   try {
     // 1. Scene and launch.
     const core::Scene scene = core::loadScene(argv[1]);
     const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
+    coupled = participant.coupled();
+    localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "mpm_solver");
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
@@ -59,8 +65,10 @@ int main(int argc, char** argv) {
   } catch (const core::HealthError& ex) {  // every rank (of both programs, coupled) throws it: one prints
     if (ex.reporter()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
     return 1;
-  } catch (const std::invalid_argument& ex) {  // bad input: every rank throws the same
-    if (session.world().root()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+  } catch (const std::invalid_argument& ex) {  // bad input: every rank of this program throws the same
+    if (localRoot) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    std::fflush(stderr);
+    if (coupled) core::MpiSession::abortAll(1);  // only this side knows: end the launch now
     return 1;
   } catch (const std::exception& ex) {  // may be one rank only (a coupling timeout): end the launch
     std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
