@@ -55,8 +55,17 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
                  ":", "-np", "1", solver, "-case", fluidCase};
     return plan;
   }
-  plan.programs = {"mpm_solver", "ice_solver"};
-  plan.ranks = {mpmRanks, iceRanks};
+  // A scene of one kind of material needs one program (the other would have nothing to solve).
+  if (scene.fluids().empty()) {
+    plan.programs = {"mpm_solver"};
+    plan.ranks = {mpmRanks};
+  } else if (scene.solids().empty()) {
+    plan.programs = {"ice_solver"};
+    plan.ranks = {iceRanks};
+  } else {
+    plan.programs = {"mpm_solver", "ice_solver"};
+    plan.ranks = {mpmRanks, iceRanks};
+  }
   plan.argv = {mpirun};
   for (std::size_t p = 0; p < plan.programs.size(); ++p) {
     if (p) plan.argv.emplace_back(":");
@@ -231,10 +240,18 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     for (const auto& exe : plan.executables)
       if (!fs::exists(exe))
         throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");
-    out << "coupler: scene '" << scene.name << "', schedule " << core::name(scene.coupling.schedule) << ", " << mpmRanks
-        << " MPM + " << (scene.coupling.fluid == core::FluidSolver::OpenFoam ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
-                                                              : std::to_string(iceRanks) + " ICE ranks")
-        << "\n"
+    if (plan.programs.size() == 1)
+      out << "coupler: scene '" << scene.name << "' has " << (scene.fluids().empty() ? "no fluid" : "no solid")
+          << ": " << plan.programs[0] << " alone on " << plan.ranks[0] << (plan.ranks[0] == 1 ? " rank" : " ranks")
+          << "\n";
+    else
+      out << "coupler: scene '" << scene.name << "', schedule " << core::name(scene.coupling.schedule) << ", "
+          << mpmRanks << " MPM + "
+          << (scene.coupling.fluid == core::FluidSolver::OpenFoam
+                  ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
+                  : std::to_string(iceRanks) + " ICE ranks")
+          << "\n";
+    out
         << "coupler: " << plan.commandLine() << "\n"
         << std::flush;
     if (dryRun) return 0;

@@ -22,12 +22,33 @@ mesh: {dim: 2, lower: [0, 0], upper: [1, 1], cells: [4, 4]}
 time: {end: 1.0e-3}
 materials:
   - {name: air, kind: fluid, eos: {type: ideal_gas, gamma: 1.4}}
+  - {name: steel, kind: solid, density: 8900, model: {type: linear_elastic, bulk_modulus: 117e9, shear_modulus: 43.8e9}}
 geometry:
   - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1.0e5, density: 1.2}
+  - {shape: {type: box, lo: [0.25, 0.25], hi: [0.75, 0.75]}, material: steel}
 coupling: {ranks: {mpm: 2, ice: 3}}
 )", "tiny.yaml");
 }
+
+// A scene of one kind of material: one program, the other has nothing to solve.
+core::Scene oneKindScene(bool solid) {
+  std::string yaml = "scene: one\nmesh: {dim: 2, lower: [0, 0], upper: [1, 1], cells: [4, 4]}\ntime: {end: 1.0e-3}\n";
+  yaml += solid ? "materials:\n  - {name: steel, kind: solid, density: 8900, model: {type: linear_elastic, "
+                  "bulk_modulus: 117e9, shear_modulus: 43.8e9}}\ngeometry:\n  - {shape: {type: box, lo: [0.25, 0.25], "
+                  "hi: [0.75, 0.75]}, material: steel}\n"
+                : "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gas, gamma: 1.4}}\ngeometry:\n  - "
+                  "{shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1.0e5, density: 1.2}\n";
+  return core::parseScene(yaml + "coupling: {ranks: {mpm: 2, ice: 3}}\n", "one.yaml");
+}
 }  // namespace
+
+TEST(CoupleRun, ASceneOfOneKindOfMaterialLaunchesOneProgram) {
+  const auto solids = coupler::composeLaunch(oneKindScene(true), "one.yaml", "/b", "/x/mpirun", 2, 3);
+  EXPECT_EQ(solids.commandLine(), "/x/mpirun -np 2 /b/mpm_solver/mpm_solver one.yaml");
+  const auto fluids = coupler::composeLaunch(oneKindScene(false), "one.yaml", "/b", "/x/mpirun", 2, 3);
+  EXPECT_EQ(fluids.commandLine(), "/x/mpirun -np 3 /b/ice_solver/ice_solver one.yaml");
+  EXPECT_EQ(fluids.describeWorldRank(0), "ice_solver rank 0");
+}
 
 TEST(CoupleRun, ComposesMpmdLineFromSceneRanks) {
   const auto s = tinyScene();
