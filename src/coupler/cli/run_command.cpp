@@ -11,6 +11,7 @@
 #include <optional>
 #include <poll.h>
 #include <regex>
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -84,6 +85,17 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
     for (std::sregex_iterator it(text.begin(), text.end(), re), end; it != end; ++it)
       ranks.insert(std::stoi((*it)[1]));
   std::vector<std::string> lines;
+  // The side that failed says so itself ("ice_solver: error: ..."): name it first, with its
+  // message (mpirun's own report of which rank aborted is racy and may be missing).
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    for (const auto& program : plan.programs) {
+      const std::string tag = program + ": error: ";
+      if (line.rfind(tag, 0) == 0) {
+        const std::string failed = "coupler: " + program + " failed: " + line.substr(tag.size());
+        if (std::find(lines.begin(), lines.end(), failed) == lines.end()) lines.push_back(failed);
+      }
+    }
   for (int r : ranks) {
     const std::string who = plan.describeWorldRank(r);
     if (!who.empty()) lines.push_back("coupler: world rank " + std::to_string(r) + " is " + who);

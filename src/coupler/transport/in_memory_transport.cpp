@@ -9,6 +9,7 @@ namespace mpmice::coupler {
 void InMemoryTransport::move(std::span<const core::Field* const> from, std::span<core::Field* const> to, int /*tag*/,
                              const std::string& what) {
   const Stopwatch watch(seconds_);
+  ++moves_;
   if (from.size() != to.size())
     throw std::logic_error("in-memory transport: " + what + ": " + std::to_string(from.size()) + " fields produced, " +
                            std::to_string(to.size()) + " consumed");
@@ -16,6 +17,7 @@ void InMemoryTransport::move(std::span<const core::Field* const> from, std::span
 }
 
 std::vector<double> InMemoryTransport::trade(const std::vector<double>& mine, const std::string& /*what*/) {
+  ++trades_;
   return mine;
 }
 

@@ -33,12 +33,14 @@ void MpiTransport::move(std::span<const core::Field* const> from, std::span<core
   const Stopwatch watch(seconds_);
   if (!from.empty() && !to.empty())
     throw std::logic_error("MPI transport: " + what + " is produced and consumed in one process");
+  ++moves_;
   if (!from.empty()) exchange_.send({from.begin(), from.end()}, tag, what);
   if (!to.empty()) exchange_.receive({to.begin(), to.end()}, tag, what);
 }
 
 std::vector<double> MpiTransport::trade(const std::vector<double>& mine, const std::string& what) {
   const Stopwatch watch(seconds_);
+  ++trades_;
   return tradeValues(participant_, mine, what);
 }
 

@@ -29,11 +29,15 @@ class Transport {
   virtual std::vector<double> trade(const std::vector<double>& mine, const std::string& what) = 0;
   /// Wall time spent in move() and trade() so far [s].
   [[nodiscard]] double seconds() const { return seconds_; }
+  /// Exchange points moved (move() calls with data on this side) and scalar trades so far.
+  [[nodiscard]] long moves() const { return moves_; }
+  [[nodiscard]] long trades() const { return trades_; }
   /// True when both sides run in this process.
   [[nodiscard]] virtual bool inMemory() const = 0;
 
  protected:
   double seconds_ = 0;
+  long moves_ = 0, trades_ = 0;
 };
 
 }  // namespace mpmice::coupler

@@ -156,9 +156,14 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n
         << " steps (" << double(iterations) / double(std::max(1L, n)) << " per step), " << unconverged
         << " steps accepted unconverged\n";
-    log << "coupling: this process computed " << computeTotal << " s and spent "
-        << transport.seconds() - exchangeStart << " s in exchange (" << (both ? "in memory" : "rank to rank")
-        << ")\n";
+  }
+  if (comm.root()) {  // every process: its compute/exchange split and the mean time per exchange point
+    const double ex = transport.seconds() - exchangeStart;
+    const long points = transport.moves() + transport.trades();
+    log << "coupling (" << label << "): computed " << computeTotal << " s, " << ex << " s in exchange ("
+        << (both ? "in memory" : "rank to rank") << "; " << transport.moves() << " field moves and "
+        << transport.trades() << " scalar trades, " << 1e6 * ex / double(std::max(1L, points))
+        << " us each on average, waiting for the peer included)\n";
   }
   if (comm.root() && sides.fluid && sides.fluid->solver().semiImplicit()) {
     const long lin = sides.fluid->solver().linearIterationsTotal();
