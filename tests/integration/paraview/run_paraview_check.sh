@@ -5,8 +5,8 @@
 #   run_paraview_check.sh MPMICE_BINARY SCENE
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-mpmice="$1"
-scene="$2"
+mpmice="$(realpath "$1")"
+scene="$(realpath "$2")"
 if ! command -v pvpython >/dev/null 2>&1 || ! command -v xvfb-run >/dev/null 2>&1; then
   if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
     echo "paraview check: installing paraview and xvfb (Debian packages, a few minutes)"
