@@ -49,7 +49,9 @@ std::vector<std::string> OutputReader::gridFieldNames(Centering c) const {
   const H5Group root = file_->root();
   const std::string g = c == Centering::Cell ? "grid/cell" : "grid/node";
   if (!root.has(g)) return {};
-  return root.openGroup(g).members();
+  auto names = root.openGroup(g).members();
+  std::erase(names, "xdmf");  // the XDMF index's companions (node layers of 1D/2D meshes)
+  return names;
 }
 
 bool OutputReader::hasGridField(Centering c, const std::string& name) const {
@@ -139,6 +141,7 @@ bool OutputReader::hasParticles() const { return file_->root().has("particles");
 std::vector<std::string> OutputReader::particleArrayNames() const {
   if (!hasParticles()) return {};
   auto names = file_->root().openGroup("particles").members();
+  std::erase(names, "xdmf");  // the XDMF index's companions (connectivity, full 3x3 tensors)
   std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n == "position"; });
   return names;
 }

@@ -1,5 +1,6 @@
 #include "core/io/output_writer.h"
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -182,53 +183,64 @@ void OutputWriter::writeGridField(const H5Group& group, const Field& f) const {
   const int nc = f.ncomp();
   std::vector<hsize_t> dims;
   for (std::int64_t d : XdmfWriter::gridDims(mesh, f.centering(), nc)) dims.push_back(static_cast<hsize_t>(d));
-  const H5Dataset ds = group.createDataset(f.name(), dims);
   const H5PropList dxpl = H5PropList::transferMpio(true);
-
-  // Writes region `src` of the field at global position `dst` (same shape).
-  auto writeRegion = [&](const Box& src, const Box& dst) {
-    std::vector<double> buf;
-    buf.reserve(static_cast<std::size_t>(src.numPts() * nc));
-    forEach(src, [&](int i, int j, int k) {
-      for (int c = 0; c < nc; ++c) buf.push_back(f(i, j, k, c));
-    });
-    std::vector<hsize_t> start, count;
-    if (src.ok()) {
-      start = {hsize_t(dst.lo[2]), hsize_t(dst.lo[1]), hsize_t(dst.lo[0])};
-      count = {hsize_t(src.length(2)), hsize_t(src.length(1)), hsize_t(src.length(0))};
-    } else {
-      start = {0, 0, 0};
-      count = {0, 0, 0};
-    }
-    if (nc > 1) {
-      start.push_back(0);
-      count.push_back(hsize_t(nc));
-    }
-    writeBlock(ds, start, count, buf, dxpl.id());
-  };
-
   const Box owned = decomp_.ownedBox(comm_.rank(), f.centering());
-  writeRegion(owned, owned);
-
-  // Periodic node images: node n of a periodic direction is node 0, owned by the low rank. Every
-  // rank makes the same sequence of (collective) writes, with an empty region when it has none.
-  if (f.centering() != Centering::Node) return;
   const auto& per = decomp_.periodic();
-  for (int mask = 1; mask < 8; ++mask) {
-    bool used = true;
-    for (int d = 0; d < 3; ++d)
-      if ((mask >> d & 1) && !(d < mesh.dim() && per[d])) used = false;
-    if (!used) continue;
-    Box src = owned;
-    IntVect shift{0, 0, 0};
-    for (int d = 0; d < 3; ++d)
-      if (mask >> d & 1) {
-        src.hi[d] = std::min(src.hi[d], 0);
-        src.lo[d] = std::max(src.lo[d], 0);
-        shift[d] = mesh.cells()[d];
+
+  // Writes the field into `ds`: the owned region, then (nodes) the periodic images, each shifted
+  // by `layer` (z,y,x) in the dataset. Every rank makes the same sequence of (collective) writes.
+  auto writeAll = [&](const H5Dataset& ds, const std::array<hsize_t, 3>& layer) {
+    // Writes region `src` of the field at global position `dst` (same shape).
+    auto writeRegion = [&](const Box& src, const Box& dst) {
+      std::vector<double> buf;
+      buf.reserve(static_cast<std::size_t>(src.numPts() * nc));
+      forEach(src, [&](int i, int j, int k) {
+        for (int c = 0; c < nc; ++c) buf.push_back(f(i, j, k, c));
+      });
+      std::vector<hsize_t> start, count;
+      if (src.ok()) {
+        start = {hsize_t(dst.lo[2]) + layer[0], hsize_t(dst.lo[1]) + layer[1], hsize_t(dst.lo[0]) + layer[2]};
+        count = {hsize_t(src.length(2)), hsize_t(src.length(1)), hsize_t(src.length(0))};
+      } else {
+        start = {0, 0, 0};
+        count = {0, 0, 0};
       }
-    writeRegion(src, src.ok() ? src.shift(shift) : src);
-  }
+      if (nc > 1) {
+        start.push_back(0);
+        count.push_back(hsize_t(nc));
+      }
+      writeBlock(ds, start, count, buf, dxpl.id());
+    };
+    writeRegion(owned, owned);
+    // Periodic node images: node n of a periodic direction is node 0, owned by the low rank.
+    if (f.centering() != Centering::Node) return;
+    for (int mask = 1; mask < 8; ++mask) {
+      bool used = true;
+      for (int d = 0; d < 3; ++d)
+        if ((mask >> d & 1) && !(d < mesh.dim() && per[d])) used = false;
+      if (!used) continue;
+      Box src = owned;
+      IntVect shift{0, 0, 0};
+      for (int d = 0; d < 3; ++d)
+        if (mask >> d & 1) {
+          src.hi[d] = std::min(src.hi[d], 0);
+          src.lo[d] = std::max(src.lo[d], 0);
+          shift[d] = mesh.cells()[d];
+        }
+      writeRegion(src, src.ok() ? src.shift(shift) : src);
+    }
+  };
+  writeAll(group.createDataset(f.name(), dims), {0, 0, 0});
+
+  // Node data of a 1D/2D mesh: the XDMF index shows two node layers in unused directions (so
+  // that every reader loads the cell data), read from a companion holding the layer in each.
+  if (f.centering() != Centering::Node || mesh.dim() == 3) return;
+  std::vector<hsize_t> ldims;
+  for (std::int64_t d : XdmfWriter::xdmfDims(mesh, f.centering(), nc)) ldims.push_back(static_cast<hsize_t>(d));
+  const H5Dataset layered = group.group("xdmf").createDataset(f.name(), ldims);
+  const hsize_t ny = mesh.dim() < 2 ? 2 : 1;
+  for (hsize_t z = 0; z < 2; ++z)
+    for (hsize_t y = 0; y < ny; ++y) writeAll(layered, {z, y, 0});
 }
 
 void OutputWriter::writeParticles(const H5Group& root, const ParticleOutput& p) const {
@@ -241,6 +253,7 @@ void OutputWriter::writeParticles(const H5Group& root, const ParticleOutput& p) 
   for (long long c : counts) total += c;
 
   const H5Group g = root.group("particles");
+  (void)g.group("xdmf");  // what only the XDMF index reads: connectivity, full tensors
   g.writeAttribute("rank_counts", std::vector<std::int64_t>(counts.begin(), counts.end()));
   const H5PropList dxpl = H5PropList::transferMpio(true);
   const auto n = static_cast<std::size_t>(local);
@@ -264,7 +277,19 @@ void OutputWriter::writeParticles(const H5Group& root, const ParticleOutput& p) 
 
   writeArray("position", {p.position[0], p.position[1], p.position[2]}, true);
   for (const auto& s : p.scalars) writeArray(s.name, {s.values}, false);
-  for (const auto& v : p.vectors) writeArray(v.name, v.components, v.components.size() > 1);
+  for (const auto& v : p.vectors) {
+    writeArray(v.name, v.components, v.components.size() > 1);
+    // A symmetric tensor (xx, yy, zz, xy, yz, xz) also as its full 3x3, row by row (xx xy xz yx
+    // yy yz zx zy zz): the component order every ParaView reader agrees on.
+    if (v.components.size() == 6) {
+      const auto& c = v.components;
+      writeArray("xdmf/" + v.name, {c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2]}, true);
+    }
+  }
+  // The Polyvertex connectivity: particle q is vertex q (global numbering, stored as doubles).
+  std::vector<double> vertex(n);
+  for (std::size_t q = 0; q < n; ++q) vertex[q] = static_cast<double>(offset) + static_cast<double>(q);
+  writeArray("xdmf/vertex", {std::span<const double>(vertex)}, false);
 }
 
 }  // namespace mpmice::core

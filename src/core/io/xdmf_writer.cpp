@@ -1,5 +1,6 @@
 #include "core/io/xdmf_writer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -37,9 +38,9 @@ const char* attributeType(int ncomp) {
 }
 
 void dataItem(std::ostream& os, const std::string& indent, const std::vector<std::int64_t>& dims,
-              const std::string& ref) {
-  os << indent << "<DataItem Dimensions=\"" << joinDims(dims)
-     << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << ref << "</DataItem>\n";
+              const std::string& ref, const char* numberType = "Float") {
+  os << indent << "<DataItem Dimensions=\"" << joinDims(dims) << "\" NumberType=\"" << numberType
+     << "\" Precision=\"8\" Format=\"HDF\">" << ref << "</DataItem>\n";
 }
 
 }  // namespace
@@ -56,61 +57,87 @@ void XdmfWriter::add(XdmfStep s) {
   steps_.push_back(std::move(s));
 }
 
+std::vector<std::int64_t> XdmfWriter::xdmfDims(const Mesh& mesh, Centering c, int ncomp) {
+  std::vector<std::int64_t> d = gridDims(mesh, c, ncomp);
+  if (c == Centering::Node)
+    for (int k = mesh.dim(); k < 3; ++k) d[static_cast<std::size_t>(2 - k)] = 2;
+  return d;
+}
+
+std::string XdmfWriter::xdmfGridDataset(const Mesh& mesh, Centering c, const std::string& name) {
+  const bool layered = c == Centering::Node && mesh.dim() < 3;
+  return std::string(c == Centering::Cell ? "grid/cell/" : "grid/node/") + (layered ? "xdmf/" : "") + name;
+}
+
 std::string XdmfWriter::text() const {
   std::ostringstream os;
-  const auto nodes = gridDims(mesh_, Centering::Node, 1);
+  // Two node layers in every unused direction: the readers then see one cell there (the legacy
+  // reader loads no cell data on a mesh one node thick).
+  const auto nodes = xdmfDims(mesh_, Centering::Node, 1);
   const auto& o = mesh_.origin();
   const auto& h = mesh_.spacing();
+  auto stepName = [](int step) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "step_%06d", step);
+    return std::string(buf);
+  };
   os << "<?xml version=\"1.0\" ?>\n"
      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
      << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
      << "  <Domain>\n"
-     << "    <Grid Name=\"TimeSeries\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+     << "    <Grid Name=\"mesh\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const XdmfStep& s : steps_) {
-    char stepName[32];
-    std::snprintf(stepName, sizeof stepName, "step_%06d", s.step);
-    os << "      <Grid Name=\"" << stepName << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+    os << "      <Grid Name=\"" << stepName(s.step) << "\" GridType=\"Uniform\">\n"
        << "        <Time Value=\"" << num(s.time) << "\" />\n"
-       << "        <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
-       << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << joinDims(nodes) << "\" />\n"
-       << "          <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-       << "            <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+       << "        <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << joinDims(nodes) << "\" />\n"
+       << "        <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+       << "          <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
           "Format=\"XML\">"
        << num(o[2]) << " " << num(o[1]) << " " << num(o[0]) << "</DataItem>\n"
-       << "            <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+       << "          <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
           "Format=\"XML\">"
        << num(h[2]) << " " << num(h[1]) << " " << num(h[0]) << "</DataItem>\n"
-       << "          </Geometry>\n";
+       << "        </Geometry>\n";
     for (const auto& a : s.grid) {
       const bool cell = a.centering == Centering::Cell;
-      os << "          <Attribute Name=\"" << a.name << "\" AttributeType=\"" << attributeType(a.ncomp)
+      os << "        <Attribute Name=\"" << a.name << "\" AttributeType=\"" << attributeType(a.ncomp)
          << "\" Center=\"" << (cell ? "Cell" : "Node") << "\">\n";
-      dataItem(os, "            ", gridDims(mesh_, a.centering, a.ncomp),
-               s.h5file + ":/grid/" + (cell ? "cell/" : "node/") + a.name);
-      os << "          </Attribute>\n";
-    }
-    os << "        </Grid>\n";
-    if (s.numParticles >= 0) {
-      const std::int64_t n = s.numParticles;
-      os << "        <Grid Name=\"particles\" GridType=\"Uniform\">\n"
-         << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-         << "\" NodesPerElement=\"1\" />\n"
-         << "          <Geometry GeometryType=\"XYZ\">\n";
-      dataItem(os, "            ", {n, 3}, s.h5file + ":/particles/position");
-      os << "          </Geometry>\n";
-      for (const auto& a : s.particles) {
-        os << "          <Attribute Name=\"" << a.name << "\" AttributeType=\"" << attributeType(a.ncomp)
-           << "\" Center=\"Node\">\n";
-        dataItem(os, "            ", a.ncomp > 1 ? std::vector<std::int64_t>{n, a.ncomp} : std::vector<std::int64_t>{n},
-                 s.h5file + ":/particles/" + a.name);
-        os << "          </Attribute>\n";
-      }
-      os << "        </Grid>\n";
+      dataItem(os, "          ", xdmfDims(mesh_, a.centering, a.ncomp),
+               s.h5file + ":/" + xdmfGridDataset(mesh_, a.centering, a.name));
+      os << "        </Attribute>\n";
     }
     os << "      </Grid>\n";
   }
-  os << "    </Grid>\n"
-     << "  </Domain>\n"
+  os << "    </Grid>\n";
+  const bool anyParticles = std::any_of(steps_.begin(), steps_.end(), [](const XdmfStep& s) { return s.numParticles >= 0; });
+  if (anyParticles) {
+    os << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const XdmfStep& s : steps_) {
+      if (s.numParticles < 0) continue;
+      const std::int64_t n = s.numParticles;
+      os << "      <Grid Name=\"" << stepName(s.step) << "\" GridType=\"Uniform\">\n"
+         << "        <Time Value=\"" << num(s.time) << "\" />\n"
+         << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n";
+      dataItem(os, "          ", {n}, s.h5file + ":/particles/xdmf/vertex", "Int");
+      os << "        </Topology>\n"
+         << "        <Geometry GeometryType=\"XYZ\">\n";
+      dataItem(os, "          ", {n, 3}, s.h5file + ":/particles/position");
+      os << "        </Geometry>\n";
+      for (const auto& a : s.particles) {
+        // A symmetric tensor (6: xx, yy, zz, xy, yz, xz) is indexed as its full 3x3 companion.
+        const bool sym = a.ncomp == 6;
+        const int nc = sym ? 9 : a.ncomp;
+        os << "        <Attribute Name=\"" << a.name << "\" AttributeType=\"" << attributeType(nc)
+           << "\" Center=\"Node\">\n";
+        dataItem(os, "          ", nc > 1 ? std::vector<std::int64_t>{n, nc} : std::vector<std::int64_t>{n},
+                 s.h5file + ":/particles/" + (sym ? "xdmf/" : "") + a.name);
+        os << "        </Attribute>\n";
+      }
+      os << "      </Grid>\n";
+    }
+    os << "    </Grid>\n";
+  }
+  os << "  </Domain>\n"
      << "</Xdmf>\n";
   return os.str();
 }

@@ -2,11 +2,15 @@
 /// @brief The XDMF 3 index over a run's HDF5 output files, so ParaView opens the time series.
 ///
 /// Holds one record per output step (its time, its HDF5 file and what that file contains) and
-/// renders them as a temporal collection: each step is a spatial collection of a structured grid
-/// (3DCoRectMesh, ORIGIN_DXDYDZ geometry, z,y,x order; cell data Center="Cell", node data
-/// Center="Node") and, when particles were written, a Polyvertex grid of the particles. 1D and 2D
-/// meshes use the same 3D layout with one node (and one cell of data) in unused directions. The
-/// index is plain text; write() replaces the file atomically (write to a temporary, rename).
+/// renders them as two temporal collections, so every ParaView reader (legacy XDMF, Xdmf3 S/T)
+/// gives the same two blocks at every time: `mesh`, one structured grid per step (3DCoRectMesh,
+/// ORIGIN_DXDYDZ geometry, z,y,x order; cell data Center="Cell", node data Center="Node"), and
+/// `particles` (only when particles were written), one Polyvertex grid per step with one vertex per
+/// particle (connectivity /particles/xdmf/vertex). 1D and 2D meshes are indexed with two node layers in
+/// unused directions (one cell of data there; node data from the companion `grid/node/xdmf/<name>` holding
+/// the layer twice); 6-component particle arrays are symmetric tensors indexed as their full 3x3
+/// companion `particles/xdmf/<name>` (xx xy xz yx yy yz zx zy zz). The index is plain text; write() replaces
+/// the file atomically (write to a temporary, rename).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,6 +50,10 @@ class XdmfWriter {
 
   /// Dataset dims (z,y,x[,ncomp]) of a grid array of this mesh; ncomp 1 gives three dims.
   static std::vector<std::int64_t> gridDims(const Mesh& mesh, Centering c, int ncomp);
+  /// Dims the index gives a grid array: gridDims with two node layers in unused directions.
+  static std::vector<std::int64_t> xdmfDims(const Mesh& mesh, Centering c, int ncomp);
+  /// The dataset the index points at for a grid array ("grid/node/xdmf/v" for node data in 1D/2D).
+  static std::string xdmfGridDataset(const Mesh& mesh, Centering c, const std::string& name);
 
  private:
   Mesh mesh_;

@@ -265,19 +265,27 @@ TEST(OutputWriterXdmf, IndexListsEveryStepWithItsTimeAndMatchingDatasets) {
   std::string why;
   EXPECT_TRUE(tagsBalanced(xml, why)) << why;
 
-  // One step grid per step, each with its Time value.
-  const std::regex stepRe(R"re(<Grid Name="step_(\d+)" GridType="Collection" CollectionType="Spatial">\s*<Time Value="([^"]+)")re");
+  // Two temporal collections (mesh, then particles), each with one grid per step carrying its
+  // Time value: the block names every ParaView reader gives stay the same at every time.
+  const auto meshAt = xml.find(R"(<Grid Name="mesh" GridType="Collection" CollectionType="Temporal">)");
+  const auto partAt = xml.find(R"(<Grid Name="particles" GridType="Collection" CollectionType="Temporal">)");
+  ASSERT_NE(meshAt, std::string::npos);
+  ASSERT_NE(partAt, std::string::npos);
+  EXPECT_LT(meshAt, partAt);
+  const std::regex stepRe(R"re(<Grid Name="step_(\d+)" GridType="Uniform">\s*<Time Value="([^"]+)")re");
   std::vector<std::pair<int, double>> found;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), stepRe); it != std::sregex_iterator(); ++it)
     found.emplace_back(std::stoi((*it)[1]), std::stod((*it)[2]));
-  ASSERT_EQ(found.size(), steps.size());
+  ASSERT_EQ(found.size(), 2 * steps.size());  // the mesh's steps, then the particles'
   auto it = steps.begin();
-  for (const auto& [step, time] : found) {
-    EXPECT_EQ(step, it->first);
-    EXPECT_EQ(time, it->second);
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (i == steps.size()) it = steps.begin();
+    EXPECT_EQ(found[i].first, it->first);
+    EXPECT_EQ(found[i].second, it->second);
     ++it;
   }
-  const std::regex topoRe(R"re(<Topology TopologyType="3DCoRectMesh" Dimensions="1 8 10" />)re");
+  // A 2D mesh is indexed with two node layers in z (one cell of data), so every reader loads cell data.
+  const std::regex topoRe(R"re(<Topology TopologyType="3DCoRectMesh" Dimensions="2 8 10" />)re");
   EXPECT_EQ(std::distance(std::sregex_iterator(xml.begin(), xml.end(), topoRe), std::sregex_iterator()), 3);
 
   // Every HDF5 DataItem names an existing dataset whose shape is the DataItem's Dimensions.
@@ -297,9 +305,12 @@ TEST(OutputWriterXdmf, IndexListsEveryStepWithItsTimeAndMatchingDatasets) {
     else a = r.readParticleArray(dataset.substr(10));
     EXPECT_EQ(a.shape, dims) << dataset << " in " << file;
   }
-  // Per step: vel, mass, particle position, mass, velocity.
-  EXPECT_EQ(items, 5 * static_cast<int>(steps.size()));
-  // A 2D mesh uses the 3D layout with one cell (one node) in z.
+  // Per step: vel, mass (its two-layer companion), particle connectivity, position, mass, velocity.
+  EXPECT_EQ(items, 6 * static_cast<int>(steps.size()));
+  EXPECT_NE(xml.find(R"(<DataItem Dimensions="2 8 10" NumberType="Float" Precision="8" Format="HDF">)"
+                     "scene_000010.h5:/grid/node/xdmf/mass</DataItem>"),
+            std::string::npos);
+  // Cell data of a 2D mesh keeps one cell in z.
   EXPECT_NE(xml.find(R"(<DataItem Dimensions="1 7 9 2" NumberType="Float" Precision="8" Format="HDF">)"
                      "scene_000010.h5:/grid/cell/vel</DataItem>"),
             std::string::npos);
