@@ -15,6 +15,7 @@
 
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
+#include "core/util/error_line.h"
 #include "coupler/launch/output_lock.h"
 #include "coupler/launch/participant.h"
 #include "couplings/volume/fluid/fluid_participant.h"
@@ -46,14 +47,14 @@ int main(int argc, char** argv) {
     if (session.world().root()) std::cerr << e.what() << "\n";
     return 1;
   } catch (const core::HealthError& e) {  // every rank (of both programs, coupled) throws it: one prints
-    if (e.reporter()) std::cerr << "ice_solver: error: " << e.what() << std::endl;
+    if (e.reporter()) core::writeErrorLine("ice_solver", e.what());
     return 1;
   } catch (const std::invalid_argument& e) {  // bad input: every rank of this program throws the same
-    if (localRoot) std::cerr << "ice_solver: error: " << e.what() << std::endl;
+    if (localRoot) core::writeErrorLine("ice_solver", e.what());
     if (coupled) core::MpiSession::abortAll(1);  // only this side knows: end the launch now
     return 1;
   } catch (const std::exception& e) {  // may be one rank only (a coupling timeout): end the launch
-    std::cerr << "ice_solver: error: " << e.what() << std::endl;
+    core::writeErrorLine("ice_solver", e.what());
     core::MpiSession::abortAll(1);
   }
   return 0;

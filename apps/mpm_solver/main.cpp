@@ -21,6 +21,7 @@
 #include "core/health/health.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
+#include "core/util/error_line.h"
 #include "mpm/solver/standalone_run.h"
 
 using namespace mpmice;
@@ -47,11 +48,11 @@ int main(int argc, char** argv) {
         try {
           return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
         } catch (const core::HealthError& ex) {  // only this side knows: end the launch
-          if (ex.reporter()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+          if (ex.reporter()) core::writeErrorLine("mpm_solver", ex.what());
           std::fflush(stderr);
           core::MpiSession::abortAll(1);
         } catch (const std::invalid_argument& ex) {  // only this side knows (e.g. the fluid's case disagrees)
-          std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+          core::writeErrorLine("mpm_solver", ex.what());
           std::fflush(stderr);
           core::MpiSession::abortAll(1);
         }
@@ -63,15 +64,15 @@ int main(int argc, char** argv) {
     if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
     return 1;
   } catch (const core::HealthError& ex) {  // every rank (of both programs, coupled) throws it: one prints
-    if (ex.reporter()) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    if (ex.reporter()) core::writeErrorLine("mpm_solver", ex.what());
     return 1;
   } catch (const std::invalid_argument& ex) {  // bad input: every rank of this program throws the same
-    if (localRoot) std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    if (localRoot) core::writeErrorLine("mpm_solver", ex.what());
     std::fflush(stderr);
     if (coupled) core::MpiSession::abortAll(1);  // only this side knows: end the launch now
     return 1;
   } catch (const std::exception& ex) {  // may be one rank only (a coupling timeout): end the launch
-    std::fprintf(stderr, "mpm_solver: error: %s\n", ex.what());
+    core::writeErrorLine("mpm_solver", ex.what());
     std::fflush(stderr);
     core::MpiSession::abortAll(1);
   }

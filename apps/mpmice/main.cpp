@@ -13,6 +13,7 @@
 #include "core/io/run_lock.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
+#include "core/util/error_line.h"
 #include "couplings/volume/monolithic/monolithic_run.h"
 
 using namespace mpmice;
@@ -32,10 +33,10 @@ int main(int argc, char** argv) {
     if (comm.root()) std::cerr << e.what() << "\n";
     return 2;
   } catch (const core::HealthError& e) {  // every rank throws it: one prints, all end 1
-    if (e.reporter()) std::cerr << "mpmice: error: " << e.what() << std::endl;
+    if (e.reporter()) core::writeErrorLine("mpmice", e.what());
     return 1;
   } catch (const core::RunLockHeld& e) {
-    if (comm.root()) std::cerr << "mpmice: error: " << e.what() << "\n";
+    if (comm.root()) core::writeErrorLine("mpmice", e.what());
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "mpmice: " << e.what() << "\n";

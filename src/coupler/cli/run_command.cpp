@@ -91,8 +91,8 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
   for (std::string line; std::getline(in, line);)
     for (const auto& program : plan.programs) {
       const std::string tag = program + ": error: ";
-      if (line.rfind(tag, 0) == 0) {
-        const std::string failed = "coupler: " + program + " failed: " + line.substr(tag.size());
+      if (const auto at = line.find(tag); at != std::string::npos) {  // another program's output may precede it
+        const std::string failed = "coupler: " + program + " failed: " + line.substr(at + tag.size());
         if (std::find(lines.begin(), lines.end(), failed) == lines.end()) lines.push_back(failed);
       }
     }
