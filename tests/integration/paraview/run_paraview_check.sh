@@ -10,8 +10,10 @@ scene="$(realpath "$2")"
 if ! command -v pvpython >/dev/null 2>&1 || ! command -v xvfb-run >/dev/null 2>&1; then
   if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
     echo "paraview check: installing paraview and xvfb (Debian packages, a few minutes)"
-    DEBIAN_FRONTEND=noninteractive apt-get install -y paraview xvfb >/dev/null ||
-      { echo "paraview check: SKIPPED: apt-get install paraview xvfb failed"; exit 77; }
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get install -y -qq paraview python3-paraview xvfb >/dev/null 2>&1 ||
+      { apt-get update -qq && apt-get install -y -qq paraview python3-paraview xvfb >/dev/null; } ||
+      { echo "paraview check: SKIPPED: apt-get install paraview python3-paraview xvfb failed"; exit 77; }
   else
     echo "paraview check: SKIPPED: pvpython/xvfb-run absent and cannot install them (not root or no apt-get);"
     echo "  install with: apt-get install -y paraview xvfb"
