@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "coupler/launch/startup_watchdog.h"
 #include "coupler/launch/timed_wait.h"
 
 namespace mpmice::coupler {
@@ -31,6 +32,9 @@ Participant::~Participant() {
 }
 
 Participant Participant::join(const core::Comm& world, const std::string& name, double timeout) {
+  maybeStallAtStart(name);
+  // The collectives below wait without a bound of their own: the watchdog bounds them.
+  const StartupWatchdog watchdog(name == "mpm" ? "mpm_solver" : name == "ice" ? "ice_solver" : name, timeout);
   Participant p;
   p.name_ = name;
   p.timeout_ = timeout;
