@@ -4,6 +4,7 @@
 
 #include "coupler/cli/command_line.h"
 #include "core/scene/resource_estimate.h"
+#include "core/version.h"
 
 namespace mpmice::coupler {
 
@@ -25,6 +26,27 @@ std::string summarizeScene(const core::Scene& s) {
   return text;
 }
 
+std::string checkUsage() {
+  return "usage: coupler check [--quiet] <scene.yaml>\n"
+         "\n"
+         "Validates a scene without starting any solver: prints the scene as understood (every\n"
+         "default filled in; itself a valid scene) and a one-line summary as a YAML comment, so the\n"
+         "output can be saved and run. Exit 0 if valid; on an invalid scene the error (file, line,\n"
+         "key, value, what was expected) goes to stderr and the exit status is 2.\n"
+         "\n"
+         "arguments:\n"
+         "  <scene.yaml>                   the scene file\n"
+         "\n"
+         "options:\n"
+         "  -q, --quiet                    print the summary line only\n"
+         "  -h, --help                     this text\n"
+         "  -V, --version                  print the version and exit\n"
+         "\n"
+         "Sample runs:\n"
+         "  coupler check configs/sod.yaml\n"
+         "  coupler check --quiet configs/pressurized_cylinder.yaml\n";
+}
+
 int runCheck(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   bool quiet = false;
   std::vector<std::string> files;
@@ -32,7 +54,10 @@ int runCheck(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (a == "--quiet" || a == "-q") {
       quiet = true;
     } else if (a == "-h" || a == "--help") {
-      out << usage();
+      out << checkUsage();
+      return 0;
+    } else if (a == "-V" || a == "--version") {
+      out << core::versionLine("coupler") << "\n";
       return 0;
     } else if (!a.empty() && a.front() == '-') {
       err << "coupler check: unknown option '" << a << "'\n\n" << usage();

@@ -20,6 +20,7 @@
 #include "coupler/cli/process.h"
 #include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
+#include "core/version.h"
 
 #ifndef MPMICE_MPIRUN_PATH
 #define MPMICE_MPIRUN_PATH "mpirun"
@@ -211,6 +212,33 @@ int parseRanks(const std::string& opt, const std::string& v) {
 
 }  // namespace
 
+std::string runUsage() {
+  return "usage: coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>\n"
+         "\n"
+         "Composes the MPMD launch of mpm_solver and ice_solver on the scene (mpm_solver and the\n"
+         "scene's OpenFOAM solver for coupling.fluid: openfoam; one program when the scene has one\n"
+         "kind of material), prints it, runs it without a shell and names the participant behind\n"
+         "any failure. SIGINT/SIGTERM are forwarded to the launch (exit 128 + signal); the output\n"
+         "directory is locked for the run.\n"
+         "\n"
+         "arguments:\n"
+         "  <scene.yaml>                   the scene file\n"
+         "\n"
+         "options:\n"
+         "  --mpm-ranks N                  MPM ranks (default: the scene's coupling.ranks.mpm)\n"
+         "  --ice-ranks N                  ICE ranks (default: the scene's coupling.ranks.ice)\n"
+         "  --bin-dir DIR                  the build directory holding mpm_solver/mpm_solver and\n"
+         "                                 ice_solver/ice_solver (default: the one of this coupler)\n"
+         "  --dry-run                      print the launch line without running it\n"
+         "  -h, --help                     this text\n"
+         "  -V, --version                  print the version and exit\n"
+         "\n"
+         "Sample runs:\n"
+         "  coupler run configs/pressurized_cylinder.yaml\n"
+         "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
+         "  coupler run configs/flap_openfoam.yaml\n";
+}
+
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::string sceneFile, binDir = ownBinDir();
   int mpmRanks = 0, iceRanks = 0;
@@ -226,6 +254,13 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       else if (a == "--ice-ranks") iceRanks = parseRanks(a, value());
       else if (a == "--bin-dir") binDir = value();
       else if (a == "--dry-run") dryRun = true;
+      else if (a == "-h" || a == "--help") {
+        out << runUsage();
+        return 0;
+      } else if (a == "-V" || a == "--version") {
+        out << core::versionLine("coupler") << "\n";
+        return 0;
+      }
       else if (!a.empty() && a[0] == '-')
         throw std::invalid_argument("coupler run: unknown option '" + a + "'" +
                                     core::scene_detail::didYouMean(a, {"--mpm-ranks", "--ice-ranks", "--bin-dir", "--dry-run"}));
