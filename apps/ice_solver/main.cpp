@@ -5,6 +5,7 @@
 // Sample runs:
 //   ice_solver configs/ice_sod.yaml
 //   scripts/mpirun -np 4 ice_solver configs/ice_water_air.yaml
+//   ice_solver --help                  (or --version)
 //
 // 1. Start MPI and read the scene; join the launch: with a peer (mpm_solver), run the coupled
 //    fluid side (src/couplings/volume/fluid/fluid_participant.h).

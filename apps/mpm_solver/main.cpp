@@ -4,6 +4,7 @@
 // Sample runs:  mpm_solver configs/mpm_vibrating_bar.yaml
 //               scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml
 //               scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)
+//               mpm_solver --help                  (or --version)
 // 1. Read and validate the scene (errors name file, line and key; exit 1); join the launch
 //    (src/coupler/launch/participant.h): with a peer, run the coupled solid side and stop there
 //    (MPM-ICE: src/couplings/volume/solid; a surface coupling with OpenFOAM: src/couplings/surface/solid).

@@ -4,6 +4,7 @@
 //
 // Sample runs:  mpmice configs/pressurized_cylinder.yaml
 //               scripts/mpirun -np 2 mpmice configs/pressurized_cylinder.yaml
+//               mpmice --help                      (or --version)
 // 1. Start MPI, read and validate the scene (errors name file, line and key; exit 2).
 // 2. Run it (src/couplings/volume/monolithic/monolithic_run.h): both solvers on one
 //    decomposition, the scene's coupling schedule, output at each output time.
