@@ -13,7 +13,7 @@ packages=(
   libhypre-dev
   openmpi-bin libopenmpi-dev
   libhdf5-openmpi-dev hdf5-tools
-  libyaml-cpp-dev
+  libyaml-cpp-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
   openfoam openfoam-examples

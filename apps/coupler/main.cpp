@@ -1,7 +1,8 @@
 // coupler: checks scenes (and, later, composes and runs the MPMD launch of the two solvers).
 //
 // Sample runs:  coupler check configs/sod.yaml
-//               coupler --help
+//               coupler run --dry-run configs/pressurized_cylinder.yaml
+//               coupler --help, coupler run --help, coupler check --help, coupler --version
 #include <iostream>
 #include <string>
 #include <vector>

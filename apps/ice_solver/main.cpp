@@ -5,6 +5,7 @@
 // Sample runs:
 //   ice_solver configs/ice_sod.yaml
 //   scripts/mpirun -np 4 ice_solver configs/ice_water_air.yaml
+//   ice_solver --help                  (or --version)
 //
 // 1. Start MPI and read the scene; join the launch: with a peer (mpm_solver), run the coupled
 //    fluid side (src/couplings/volume/fluid/fluid_participant.h).
@@ -21,22 +22,28 @@
 #include "couplings/volume/fluid/fluid_participant.h"
 #include "core/health/health.h"
 #include "ice/solver/standalone_run.h"
+#include "common/scene_command_line.h"
 
 using namespace mpmice;
 
 int main(int argc, char** argv) {
   core::MpiSession session(argc, argv);
-  if (argc != 2) {
-    if (session.world().root()) std::cerr << "usage: ice_solver scene.yaml\n";
-    return 2;
-  }
+  const auto line = apps::parseSceneCommandLine(
+      argc, argv, session.world().root(), "ice_solver",
+      "Runs a fluid-only scene with multi-material ICE, or the fluid side of an MPM-ICE run when "
+      "started in one MPMD launch with mpm_solver. Progress lines with ETA, HDF5/XDMF output, the "
+      "totals CSV and a summary go to the scene's output directory; errors print on stderr (exit 1).",
+      "  ice_solver configs/ice_sod.yaml\n"
+      "  scripts/mpirun -np 4 ice_solver configs/ice_water_air.yaml\n"
+      "  scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)\n");
+  if (line.exit) return *line.exit;
   // Known once the launch is joined: in an MPMD launch an input error found by this program
   // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
   // would otherwise wait its coupling.timeout for a participant that has gone).
   bool coupled = false, localRoot = session.world().root();
   try {
     // 1. The scene; join the launch.
-    const core::Scene scene = core::loadScene(argv[1]);
+    const core::Scene scene = core::loadScene(line.scene);
     const auto participant = coupler::Participant::join(session.world(), "ice", scene.coupling.timeout);
     coupled = participant.coupled();
     localRoot = participant.local().root();

@@ -4,6 +4,7 @@
 // Sample runs:  mpm_solver configs/mpm_vibrating_bar.yaml
 //               scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml
 //               scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)
+//               mpm_solver --help                  (or --version)
 // 1. Read and validate the scene (errors name file, line and key; exit 1); join the launch
 //    (src/coupler/launch/participant.h): with a peer, run the coupled solid side and stop there
 //    (MPM-ICE: src/couplings/volume/solid; a surface coupling with OpenFOAM: src/couplings/surface/solid).
@@ -23,22 +24,29 @@
 #include "core/scene/scene.h"
 #include "core/util/error_line.h"
 #include "mpm/solver/standalone_run.h"
+#include "common/scene_command_line.h"
 
 using namespace mpmice;
 
 int main(int argc, char** argv) {
   core::MpiSession session(argc, argv);
-  if (argc != 2) {
-    if (session.world().root()) std::fprintf(stderr, "usage: mpm_solver scene.yaml\n");
-    return 2;
-  }
+  const auto line = apps::parseSceneCommandLine(
+      argc, argv, session.world().root(), "mpm_solver",
+      "Runs a solid-only scene with the explicit Material Point Method, or the solid side of an "
+      "MPM-ICE run when started in one MPMD launch with ice_solver (or OpenFOAM, coupling.fluid: "
+      "openfoam). Progress lines, HDF5/XDMF output, the energies CSV and probes go to the scene's "
+      "output directory; errors name file, line and key (exit 1).",
+      "  mpm_solver configs/mpm_vibrating_bar.yaml\n"
+      "  scripts/mpirun -np 4 mpm_solver configs/mpm_colliding_disks.yaml\n"
+      "  scripts/mpirun -np 1 mpm_solver s.yaml : -np 1 ice_solver s.yaml   (coupled)\n");
+  if (line.exit) return *line.exit;
   // Known once the launch is joined: in an MPMD launch an input error found by this program
   // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
   // would otherwise wait its coupling.timeout for a participant that has gone).
   bool coupled = false, localRoot = session.world().root();
   try {
     // 1. Scene and launch.
-    const core::Scene scene = core::loadScene(argv[1]);
+    const core::Scene scene = core::loadScene(line.scene);
     const auto participant = coupler::Participant::join(session.world(), "mpm", scene.coupling.timeout);
     coupled = participant.coupled();
     localRoot = participant.local().root();

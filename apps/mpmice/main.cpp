@@ -4,6 +4,7 @@
 //
 // Sample runs:  mpmice configs/pressurized_cylinder.yaml
 //               scripts/mpirun -np 2 mpmice configs/pressurized_cylinder.yaml
+//               mpmice --help                      (or --version)
 // 1. Start MPI, read and validate the scene (errors name file, line and key; exit 2).
 // 2. Run it (src/couplings/volume/monolithic/monolithic_run.h): both solvers on one
 //    decomposition, the scene's coupling schedule, output at each output time.
@@ -15,18 +16,24 @@
 #include "core/scene/scene.h"
 #include "core/util/error_line.h"
 #include "couplings/volume/monolithic/monolithic_run.h"
+#include "common/scene_command_line.h"
 
 using namespace mpmice;
 
 int main(int argc, char** argv) {
   core::MpiSession session(argc, argv);
   const core::Comm comm = session.world();
-  if (argc != 2) {
-    if (comm.root()) std::cerr << "usage: mpmice scene.yaml\n";
-    return 2;
-  }
+  const auto line = apps::parseSceneCommandLine(
+      argc, argv, comm.root(), "mpmice",
+      "The in-process MPM-ICE run: MPM and ICE in one process with in-memory exchange, both "
+      "solvers on one decomposition with the scene's coupling schedule; the reference for the "
+      "MPMD launch of mpm_solver + ice_solver (same schedule, same time loop, same numbers). "
+      "Scene errors name file, line and key (exit 2).",
+      "  mpmice configs/pressurized_cylinder.yaml\n"
+      "  scripts/mpirun -np 2 mpmice configs/pressurized_cylinder.yaml\n");
+  if (line.exit) return *line.exit;
   try {
-    const core::Scene scene = core::loadScene(argv[1]);  // 1.
+    const core::Scene scene = core::loadScene(line.scene);  // 1.
     const auto lock = core::lockOutputDirectory(comm, scene, "mpmice", &std::cerr);  // every rank learns a refusal
     return coupler::runMonolithic(scene, comm, std::cout);  // 2.
   } catch (const core::SceneError& e) {

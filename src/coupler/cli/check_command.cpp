@@ -2,8 +2,11 @@
 
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "coupler/cli/command_line.h"
 #include "core/scene/resource_estimate.h"
+#include "core/version.h"
 
 namespace mpmice::coupler {
 
@@ -25,28 +28,59 @@ std::string summarizeScene(const core::Scene& s) {
   return text;
 }
 
+namespace {
+
+constexpr const char* kCheckDescription =
+    "Validates a scene without starting any solver: prints the scene as understood (every default "
+    "filled in; itself a valid scene) and a one-line summary as a YAML comment, so the output can be "
+    "saved and run. Exit 0 if valid; on an invalid scene the error (file, line, key, value, what was "
+    "expected) goes to stderr and the exit status is 2.";
+
+/// The `coupler check` command line (CLI11), bound to `quiet` and `file`.
+void describeCheck(CLI::App& app, bool& quiet, std::string& file) {
+  app.description(kCheckDescription);
+  app.get_formatter()->label("Usage", "usage");
+  app.set_help_flag("-h,--help", "print this help and exit");
+  app.set_version_flag("-V,--version", core::versionLine("coupler"), "print the version and exit");
+  app.add_flag("-q,--quiet", quiet, "print the summary line only");
+  app.add_option("scene.yaml", file, "the scene file")->required();
+  app.footer("Sample runs:\n"
+             "  coupler check configs/sod.yaml\n"
+             "  coupler check --quiet configs/pressurized_cylinder.yaml\n");
+}
+
+}  // namespace
+
+std::string checkUsage() {
+  bool quiet = false;
+  std::string file;
+  CLI::App app("", "coupler check");
+  describeCheck(app, quiet, file);
+  return app.help();
+}
+
 int runCheck(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   bool quiet = false;
-  std::vector<std::string> files;
-  for (const auto& a : args) {
-    if (a == "--quiet" || a == "-q") {
-      quiet = true;
-    } else if (a == "-h" || a == "--help") {
-      out << usage();
-      return 0;
-    } else if (!a.empty() && a.front() == '-') {
-      err << "coupler check: unknown option '" << a << "'\n\n" << usage();
-      return 2;
-    } else {
-      files.push_back(a);
-    }
-  }
-  if (files.size() != 1) {
-    err << "coupler check: expected one scene file, got " << files.size() << "\n\n" << usage();
+  std::string file;
+  CLI::App app("", "coupler check");
+  describeCheck(app, quiet, file);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return 0;
+  } catch (const CLI::CallForVersion& e) {
+    out << e.what() << "\n";
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    err << "coupler check: " << e.what() << "\n"
+        << "usage: coupler check [--quiet] <scene.yaml>\n"
+        << "Run with --help for more information.\n";
     return 2;
   }
   try {
-    const core::Scene scene = core::loadScene(files.front());
+    const core::Scene scene = core::loadScene(file);
     if (!quiet) out << core::dumpScene(scene);
     out << "# ok: " << summarizeScene(scene) << "\n";
     return 0;

@@ -16,6 +16,9 @@ namespace mpmice::coupler {
 /// Runs the check on `args` (after "check"); returns the exit status.
 int runCheck(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+/// The usage text of `coupler check` (`coupler check --help`).
+std::string checkUsage();
+
 /// "scene 'sod': 1D, 100 cells ...; 1 material (air: fluid, ideal_gas); ..."
 std::string summarizeScene(const core::Scene& s);
 

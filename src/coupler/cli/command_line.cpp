@@ -3,21 +3,31 @@
 #include "coupler/cli/check_command.h"
 #include "coupler/cli/run_command.h"
 #include "core/scene/did_you_mean.h"
+#include "core/version.h"
 
 namespace mpmice::coupler {
 
 std::string usage() {
   return "usage: coupler <command> [options]\n"
          "\n"
+         "Checks scenes and composes, prints and runs the MPMD launch of mpm_solver and ice_solver\n"
+         "(or mpm_solver and OpenFOAM) on one scene. `coupler <command> --help` documents a command.\n"
+         "\n"
          "commands:\n"
          "  check [--quiet] <scene.yaml>   validate a scene; print it as understood (defaults filled in)\n"
          "                                 and a one-line summary; exit 0 if valid, 2 if not\n"
-         "  run [--mpm-ranks N] [--ice-ranks N] [--dry-run] <scene.yaml>\n"
+         "  run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>\n"
          "                                 compose, print and run the MPMD launch of mpm_solver and\n"
          "                                 ice_solver on the scene (ranks from coupling.ranks)\n"
          "\n"
          "options:\n"
-         "  -h, --help                     this text\n";
+         "  -h, --help                     this text\n"
+         "  -V, --version                  print the version and exit\n"
+         "\n"
+         "Sample runs:\n"
+         "  coupler check configs/sod.yaml\n"
+         "  coupler run --dry-run configs/pressurized_cylinder.yaml\n"
+         "  coupler --help\n";
 }
 
 int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -28,6 +38,10 @@ int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string& command = args.front();
   if (command == "-h" || command == "--help" || command == "help") {
     out << usage();
+    return 0;
+  }
+  if (command == "-V" || command == "--version" || command == "version") {
+    out << core::versionLine("coupler") << "\n";
     return 0;
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());

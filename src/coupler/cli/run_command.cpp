@@ -16,10 +16,13 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
 #include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
+#include "core/version.h"
 
 #ifndef MPMICE_MPIRUN_PATH
 #define MPMICE_MPIRUN_PATH "mpirun"
@@ -199,40 +202,90 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
   return 0;
 }
 
-int parseRanks(const std::string& opt, const std::string& v) {
-  try {
-    std::size_t used = 0;
-    const int n = std::stoi(v, &used);
-    if (used == v.size() && n >= 1) return n;
-  } catch (const std::exception&) {
-  }
-  throw std::invalid_argument("coupler run: " + opt + " expects a whole number >= 1, got '" + v + "'");
+}  // namespace
+
+namespace {
+
+struct RunOptions {
+  std::string sceneFile, binDir;
+  int mpmRanks = 0, iceRanks = 0;  // 0: the scene's coupling.ranks
+  bool dryRun = false;
+};
+
+/// The `coupler run` command line (CLI11), bound to `o`.
+void describeRun(CLI::App& app, RunOptions& o) {
+  app.description(
+      "Composes the MPMD launch of mpm_solver and ice_solver on the scene (mpm_solver and the scene's "
+      "OpenFOAM solver for coupling.fluid: openfoam; one program when the scene has one kind of "
+      "material), prints it, runs it without a shell and names the participant behind any failure. "
+      "SIGINT/SIGTERM are forwarded to the launch (exit 128 + signal); the output directory is locked "
+      "for the run.");
+  app.get_formatter()->label("Usage", "usage");
+  app.set_help_flag("-h,--help", "print this help and exit");
+  app.set_version_flag("-V,--version", core::versionLine("coupler"), "print the version and exit");
+  const auto ranks = CLI::Validator(
+      [](std::string& v) -> std::string {
+        try {
+          std::size_t used = 0;
+          const int n = std::stoi(v, &used);
+          if (used == v.size() && n >= 1) return {};
+        } catch (const std::exception&) {
+        }
+        return "expects a whole number >= 1, got '" + v + "'";
+      },
+      "", "");
+  app.add_option("--mpm-ranks", o.mpmRanks, "MPM ranks (default: the scene's coupling.ranks.mpm)")
+      ->type_name("N")->check(ranks);
+  app.add_option("--ice-ranks", o.iceRanks, "ICE ranks (default: the scene's coupling.ranks.ice)")
+      ->type_name("N")->check(ranks);
+  app.add_option("--bin-dir", o.binDir,
+                 "the build directory holding mpm_solver/mpm_solver and ice_solver/ice_solver "
+                 "(default: the one of this coupler)")
+      ->type_name("DIR");
+  app.add_flag("--dry-run", o.dryRun, "print the launch line without running it");
+  app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
+  app.footer("Sample runs:\n"
+             "  coupler run configs/pressurized_cylinder.yaml\n"
+             "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
+             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n");
 }
 
 }  // namespace
 
+std::string runUsage() {
+  RunOptions o;
+  CLI::App app("", "coupler run");
+  describeRun(app, o);
+  return app.help();
+}
+
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  std::string sceneFile, binDir = ownBinDir();
-  int mpmRanks = 0, iceRanks = 0;
-  bool dryRun = false;
-  try {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= args.size()) throw std::invalid_argument("coupler run: " + a + " needs a value");
-        return args[++i];
-      };
-      if (a == "--mpm-ranks") mpmRanks = parseRanks(a, value());
-      else if (a == "--ice-ranks") iceRanks = parseRanks(a, value());
-      else if (a == "--bin-dir") binDir = value();
-      else if (a == "--dry-run") dryRun = true;
-      else if (!a.empty() && a[0] == '-')
-        throw std::invalid_argument("coupler run: unknown option '" + a + "'" +
-                                    core::scene_detail::didYouMean(a, {"--mpm-ranks", "--ice-ranks", "--bin-dir", "--dry-run"}));
-      else if (sceneFile.empty()) sceneFile = a;
-      else throw std::invalid_argument("coupler run: one scene file expected, got '" + sceneFile + "' and '" + a + "'");
+  RunOptions o;
+  o.binDir = ownBinDir();
+  {
+    CLI::App app("", "coupler run");
+    describeRun(app, o);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    try {
+      app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+      out << app.help();
+      return 0;
+    } catch (const CLI::CallForVersion& e) {
+      out << e.what() << "\n";
+      return 0;
+    } catch (const CLI::ParseError& e) {
+      err << "coupler run: " << e.what() << "\n"
+          << "usage: coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>\n"
+          << "Run with --help for more information.\n";
+      return 2;
     }
-    if (sceneFile.empty()) throw std::invalid_argument("coupler run: no scene file given");
+  }
+  const std::string& sceneFile = o.sceneFile;
+  const std::string& binDir = o.binDir;
+  int mpmRanks = o.mpmRanks, iceRanks = o.iceRanks;
+  const bool dryRun = o.dryRun;
+  try {
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;

@@ -40,6 +40,9 @@ struct LaunchPlan {
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                          const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "");
 
+/// The usage text of `coupler run` (`coupler run --help`).
+std::string runUsage();
+
 /// Runs `coupler run` on args (after "run"); returns the exit status.
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
