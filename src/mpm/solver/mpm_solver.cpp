@@ -64,6 +64,24 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
       return s.contains(x, dim);
     };
   generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains);
+  // A solid the scene places but no particle represents (a shape smaller than the particles'
+  // spacing) is an input error, named here rather than found later by the output or the physics.
+  {
+    std::vector<double> count(scene_.materials.size(), 0.0);
+    for (std::size_t i = 0; i < p_.size(); ++i) count[static_cast<std::size_t>(p_.material[i])] += 1.0;
+    comm_.sumInPlace(count);
+    for (const auto& r : scene_.geometry)
+      for (const auto& f : r.fill) {
+        const int m = scene_.materialIndex(f.material);
+        if (m < 0 || scene_.materials[m].kind != core::MaterialKind::Solid || count[static_cast<std::size_t>(m)] > 0)
+          continue;
+        std::ostringstream os;
+        os << "geometry." << r.name << ": solid '" << f.material << "' yields no particle: its shape holds no "
+           << "particle position of the mesh (cell size / particles_per_cell); enlarge the shape, refine the mesh "
+           << "or raise particles_per_cell";
+        throw std::invalid_argument(os.str());
+      }
+  }
   for (std::size_t l = 0; l < scene_.loads.size(); ++l) {
     const auto& ld = scene_.loads[l];
     int mat = -1;

@@ -81,6 +81,16 @@ TEST(BadInput, ParticleOutsideMesh) {
   EXPECT_NE(m.find("geometry.block"), std::string::npos) << m;
 }
 
+TEST(BadInput, ASolidSmallerThanTheParticleSpacingIsNamed) {
+  auto s = blockScene();
+  // Cells of 0.25 with 2 x 3 particles: positions 0.0625 / 0.0417 apart; this box holds none.
+  s.geometry[0].shape.lo = {0.51, 0.51, 0};
+  s.geometry[0].shape.hi = {0.54, 0.53, 0};
+  const auto m = errorOf(s);
+  EXPECT_NE(m.find("geometry.block: solid 'block' yields no particle"), std::string::npos) << m;
+  EXPECT_NE(m.find("raise particles_per_cell"), std::string::npos) << m;
+}
+
 TEST(BadInput, ParticleLeavesMeshDuringRun) {
   auto s = blockScene();
   s.boundary[1].type = core::BoundaryType::Free;
