@@ -4,7 +4,30 @@
 
 namespace mpmice::core {
 
+namespace {
+std::string& storedCommandLine() {
+  static std::string line;
+  return line;
+}
+std::string quoted(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:,+@%") ==
+                        std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+}  // namespace
+
+const std::string& MpiSession::commandLine() { return storedCommandLine(); }
+
 MpiSession::MpiSession(int& argc, char**& argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) {
+    if (i) line.push_back(' ');
+    line.append(quoted(argv[i]));
+  }
+  storedCommandLine() = line;
   int initialized = 0;
   MPI_Initialized(&initialized);
   if (!initialized) MPI_Init(&argc, &argv);

@@ -4,6 +4,8 @@
 /// This is the only place in the project that names MPI_COMM_WORLD. Programs create one
 /// MpiSession in main() and pass world() (or a sub-communicator split from it by the coupler's
 /// launch code) to the libraries.
+#include <string>
+
 #include "core/parallel/comm.h"
 
 namespace mpmice::core {
@@ -17,6 +19,9 @@ class MpiSession {
 
   /// Every process of the launch (all programs of an MPMD launch).
   [[nodiscard]] Comm world() const;
+  /// This program's command line as given (arguments shell-quoted where needed), for the run
+  /// record; empty before a session exists.
+  [[nodiscard]] static const std::string& commandLine();
   /// Aborts every process of the launch with the given code.
   [[noreturn]] static void abortAll(int code);
 };

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/io/csv_writer.h"
+#include "core/io/run_record.h"
 #include "core/io/output_selection.h"
 #include "core/io/output_writer.h"
 #include "core/time/time_loop.h"
@@ -18,6 +19,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     log << "note: the scene has solid materials; ice_solver alone treats them as absent external "
            "materials (run the coupler for MPM-ICE)\n";
   IceSolver solver(scene, comm);
+  core::RunRecord record(scene, comm, "ice_solver");
   if (comm.root()) {
     log << "scene      " << scene.name << " (" << scene.file << ")\n"
         << "mesh       " << scene.mesh.describe() << "\n"
@@ -66,6 +68,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     if (outputs.due(solver.time())) output();
   }
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) output();  // the last step
+  record.completed();
   progress.finish(static_cast<int>(solver.steps()), solver.time(), double(scene.mesh.numCells()), "cell-steps");
   if (comm.root() && writer) log << "output     " << writer->xdmfPath() << "\n";
   return 0;

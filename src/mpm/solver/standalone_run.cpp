@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/io/csv_writer.h"
+#include "core/io/run_record.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
 #include "mpm/solver/health_check.h"
@@ -14,6 +15,7 @@ namespace mpmice::mpm {
 
 int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log) {
   MpmSolver solver(scene, comm);
+  core::RunRecord record(scene, comm, "mpm_solver");
   const long long np = solver.globalParticleCount();
   core::Progress progress(log, comm, 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
@@ -53,6 +55,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
                   core::reached(solver.time(), scene.time.end));
   }
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // stopped by time.max_steps
+  record.completed();
   const auto e = solver.energies();
   progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");
   if (comm.root())

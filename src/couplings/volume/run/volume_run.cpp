@@ -10,6 +10,7 @@
 #include "core/health/health.h"
 #include "core/io/csv_writer.h"
 #include "core/io/output_selection.h"
+#include "core/io/run_record.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
 #include "couplings/volume/common/run_output.h"
@@ -54,6 +55,8 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
                    scene.mesh.describe(), comm.size());
   std::vector<std::string> materials;  // output.fields: each side writes its part of the list
   for (const auto& m : scene.materials) materials.push_back(m.name);
+  core::RunRecord record(scene, comm, both ? "mpmice" : sides.solid ? "mpm_solver" : "ice_solver",
+                         both ? "" : sides.solid ? "_solid" : "_fluid");
   RunOutput out(scene, comm, decomp, both ? "" : sides.solid ? "_solid" : "_fluid", sides.solid != nullptr);
   auto output = [&](long n, double t) {
     std::vector<core::Field> fields;
@@ -151,6 +154,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   // 3. The last step is always written.
   if (!outputs.written(t) && outputs.due(t, true)) output(n, t);
 
+  record.completed();
   // 4. Closing lines.
   if (comm.root() && sides.solid) {
     log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n

@@ -1,0 +1,32 @@
+#pragma once
+/// @brief What a run was: `<directory>/<scene><suffix>_run.yaml`, written by rank 0 at the start
+/// and rewritten at the end (each time to a temporary name, then renamed).
+///
+///   program, version (the build's git describe), command line, ranks, host, started, ended,
+///   status ("running", "completed", or the failure when the program caught one), scene file,
+///   scene hash, and the scene as understood (the `coupler check` dump).
+/// Nothing is written when output.enabled is false.
+#include <memory>
+#include <string>
+
+#include "core/parallel/comm.h"
+#include "core/scene/scene.h"
+
+namespace mpmice::core {
+
+class RunRecord {
+ public:
+  RunRecord(const Scene& scene, const Comm& comm, std::string program, const std::string& suffix = "");
+  /// The run ended normally.
+  void completed();
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  void write(const std::string& status) const;
+  const Scene& scene_;
+  bool writer_;
+  std::string program_, path_, started_;
+  int ranks_;
+};
+
+}  // namespace mpmice::core
