@@ -138,6 +138,9 @@ double MpmSolver::stableTimeStep(std::size_t* limiting) const {
   cmax = comm_.max(cmax);
   if (limiting) *limiting = local == cmax && cmax > 0 ? arg : p_.size();
   double dt = cmax > 0 ? scene_.time.cfl * dxMin / cmax : scene_.time.dt_max;
+  // Explicit damping v (1 - c dt): a step beyond 1 / c would reverse the velocity and, beyond
+  // 2 / c, amplify it; the step keeps c dt <= 1.
+  if (damping_ > 0) dt = std::min(dt, 1.0 / damping_);
   dt = std::min(dt, scene_.time.dt_max);
   if (step_ == 0 && scene_.time.dt_initial > 0) dt = std::min(dt, scene_.time.dt_initial);
   return dt;
@@ -149,6 +152,10 @@ std::string MpmSolver::stableTimeStepLimit() const {
   const core::Mesh& mesh = scene_.mesh;
   std::ostringstream os;
   os.precision(6);
+  if (damping_ > 0 && dt == 1.0 / damping_ && dt < scene_.time.dt_max) {
+    os << "the damping bound 1 / mpm.damping (mpm.damping " << damping_ << " 1/s, dt " << dt << " s)";
+    return comm_.firstMessage(comm_.root() ? os.str() : "");
+  }
   const bool cfl = dt < scene_.time.dt_max && !(step_ == 0 && dt == scene_.time.dt_initial);
   if (!cfl) {
     os << (step_ == 0 && dt == scene_.time.dt_initial ? "time.dt_initial" : "time.dt_max") << " (dt " << dt << " s)";

@@ -91,6 +91,19 @@ TEST(BadInput, ASolidSmallerThanTheParticleSpacingIsNamed) {
   EXPECT_NE(m.find("raise particles_per_cell"), std::string::npos) << m;
 }
 
+TEST(StableStep, StrongDampingLimitsTheStepAndIsNamed) {
+  auto s = blockScene();
+  s.mpm.damping = 1e9;  // [1/s]: far beyond what the CFL step of this block allows
+  MpmSolver solver(s, self());
+  EXPECT_LE(solver.stableTimeStep(), 1e-9);
+  const std::string why = solver.stableTimeStepLimit();
+  EXPECT_NE(why.find("the damping bound 1 / mpm.damping"), std::string::npos) << why;
+  // The run stays bounded: kinetic energy does not grow under damping.
+  const double e0 = solver.energies().total();
+  for (int k = 0; k < 20; ++k) solver.advance();
+  EXPECT_LE(solver.energies().kinetic, e0 + 1e-12);
+}
+
 TEST(BadInput, ParticleLeavesMeshDuringRun) {
   auto s = blockScene();
   s.boundary[1].type = core::BoundaryType::Free;
