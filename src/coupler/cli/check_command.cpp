@@ -64,21 +64,8 @@ int runCheck(const std::vector<std::string>& args, std::ostream& out, std::ostre
   std::string file;
   CLI::App app("", "coupler check");
   describeCheck(app, quiet, file);
-  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-  try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return 0;
-  } catch (const CLI::CallForVersion& e) {
-    out << e.what() << "\n";
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    err << "coupler check: " << e.what() << "\n"
-        << "usage: coupler check [--quiet] <scene.yaml>\n"
-        << "Run with --help for more information.\n";
-    return 2;
-  }
+  if (const auto done = parseSubcommand(app, args, "coupler check", "coupler check [--quiet] <scene.yaml>", out, err))
+    return *done;
   try {
     const core::Scene scene = core::loadScene(file);
     if (!quiet) out << core::dumpScene(scene);

@@ -1,11 +1,33 @@
 #include "coupler/cli/command_line.h"
 
+#include <CLI/CLI.hpp>
+
 #include "coupler/cli/check_command.h"
 #include "coupler/cli/run_command.h"
 #include "core/scene/did_you_mean.h"
 #include "core/version.h"
 
 namespace mpmice::coupler {
+
+std::optional<int> parseSubcommand(CLI::App& app, const std::vector<std::string>& args, const std::string& command,
+                                   const std::string& usageLine, std::ostream& out, std::ostream& err) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return 0;
+  } catch (const CLI::CallForVersion& e) {
+    out << e.what() << "\n";
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    err << command << ": " << e.what() << "\n"
+        << "usage: " << usageLine << "\n"
+        << "Run with --help for more information.\n";
+    return 2;
+  }
+  return std::nullopt;
+}
 
 std::string usage() {
   return "usage: coupler <command> [options]\n"

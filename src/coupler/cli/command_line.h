@@ -5,11 +5,22 @@
 /// returns 0, `coupler --version` the version line; each subcommand parses its own options with
 /// CLI11 and answers --help and --version. No subcommand or an unknown one prints usage to `err` and returns 2. Nothing here
 /// initialises MPI.
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace mpmice::coupler {
+
+/// Parses a subcommand's `args` with its described CLI11 `app`. Returns the exit status when the
+/// parse ends the command (--help, --version: 0; a bad option: 2 with `usageLine` on `err`), or
+/// nothing when the command should go on.
+std::optional<int> parseSubcommand(CLI::App& app, const std::vector<std::string>& args, const std::string& command,
+                                   const std::string& usageLine, std::ostream& out, std::ostream& err);
 
 /// Runs the command line `args` (without the program name); returns the exit status.
 int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -1,4 +1,5 @@
 #include "coupler/cli/run_command.h"
+#include "coupler/cli/command_line.h"
 
 #include <cerrno>
 #include <chrono>
@@ -265,21 +266,10 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   {
     CLI::App app("", "coupler run");
     describeRun(app, o);
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-    try {
-      app.parse(reversed);
-    } catch (const CLI::CallForHelp&) {
-      out << app.help();
-      return 0;
-    } catch (const CLI::CallForVersion& e) {
-      out << e.what() << "\n";
-      return 0;
-    } catch (const CLI::ParseError& e) {
-      err << "coupler run: " << e.what() << "\n"
-          << "usage: coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>\n"
-          << "Run with --help for more information.\n";
-      return 2;
-    }
+    if (const auto done = parseSubcommand(app, args, "coupler run",
+                                          "coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>",
+                                          out, err))
+      return *done;
   }
   const std::string& sceneFile = o.sceneFile;
   const std::string& binDir = o.binDir;
