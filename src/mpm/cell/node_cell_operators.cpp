@@ -186,7 +186,44 @@ void NodeCellOperators::addCellForce(int material, const Field& force) {
   addRemapToExternalForce();
 }
 
+void NodeCellOperators::cellToParticles(const Field& cellValue, double offset, std::vector<double>& out) {
+  Grid& g = grid_;
+  if (nodeValue_.npts() == 0) nodeValue_ = Field("cell_to_node", Centering::Node, g.box(), 2, Grid::kGhost);
+  // Cell -> node: each node the average of the mesh cells around it (its shares sum to 1 on every
+  // mesh node; component 1 keeps that sum, so nodes outside the mesh, which no cell reaches,
+  // carry weight 0 and drop out of the particle interpolation below).
+  nodeValue_.fill(0.0);
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const double v = cellValue(i, j, k) - offset;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      nodeValue_(ni, nj, nk, 0) += share * v;
+      nodeValue_(ni, nj, nk, 1) += share;
+    });
+  });
+  g.sumAndFill({&nodeValue_});
+  bcs_.mirror(nodeValue_, Parity::Scalar);
+  // Node -> particle with the particle's own shape function, normalised by the weight of the
+  // nodes that hold a value.
+  const double* nv = nodeValue_.data(0);
+  const double* nw = nodeValue_.data(1);
+  const GridGeom geom = g.geom();
+  out.assign(p_.size(), 0.0);
+  kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      st.compute(p_, i, geom);
+      double v = 0, w = 0;
+      st.forNodes(geom, [&](std::int64_t k, double wi, double, double, double) {
+        v += wi * nv[k];
+        w += wi * nw[k];
+      });
+      out[i] = w > 0 ? v / w : 0.0;
+    }
+  });
+}
+
 void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
+  cellToParticles(pcell, pRef, particlePressure_);
   Grid& g = grid_;
   g.remap.fill(0.0);
   double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
@@ -194,8 +231,7 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const auto c = cellOfParticle(mesh_, p_, i, cells_);
-      const double s = p_.vol[i] * (pcell(c[0], c[1], c[2]) - pRef);
+      const double s = p_.vol[i] * particlePressure_[i];
       if (s == 0.0) continue;
       st.compute(p_, i, geom);
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {

@@ -2,7 +2,10 @@
 // its transpose, uniform fields, the absent-solid state and the step stamp of per-step data.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <vector>
 #include <string>
 
 #include "core/parallel/comm.h"
@@ -227,4 +230,65 @@ TEST(NodeCellOperators, StampRefusesStaleData) {
   }
   ops.cellState(0);
   EXPECT_NO_THROW(ops.addCellForce(0, cell3));
+}
+
+// Cell values reach the particles through the nodes and the particle's own shape function: a
+// linear cell field is reproduced exactly at particles whose stencil holds interior mesh nodes
+// only (node averages of a linear field are exact there), for every shape function, and an
+// offset (p_ref) is subtracted.
+TEST(NodeCellOperators, CellToParticlesReproducesLinearFields) {
+  for (const char* shape : {"linear", "gimp", "bspline2", "bspline3"})
+    for (int dim : {2, 3}) {
+      auto s = scene(dim);
+      s.mpm.shape_function = shape;
+      MpmSolver solver(s, self());
+      start(solver);
+      const core::Mesh& mesh = solver.scene().mesh;
+      const core::Box owned = solver.decomposition().cellBox(0);
+      core::Field pc("p", core::Centering::Cell, owned, 1, 0, 0.0);
+      auto linear = [&](double x, double y, double z) { return 3.0e5 + 2.0e5 * x - 7.0e4 * y + (dim == 3 ? 4.0e4 * z : 0.0); };
+      core::forEach(owned, [&](int i, int j, int k) {
+        pc(i, j, k) = linear(mesh.cellCenter(0, i), mesh.cellCenter(1, j), dim == 3 ? mesh.cellCenter(2, k) : 0.0);
+      });
+      std::vector<double> pp;
+      solver.cells().cellToParticles(pc, 1.0e5, pp);
+      const auto& p = solver.particles();
+      ASSERT_EQ(pp.size(), p.size());
+      for (std::size_t i = 0; i < p.size(); ++i)  // the block lies 2 cells inside the walls
+        EXPECT_NEAR(pp[i], linear(p.x[0][i], p.x[1][i], dim == 3 ? p.x[2][i] : 0.0) - 1.0e5, 1e-8 * 3e5)
+            << shape << " dim " << dim << " particle " << i;
+    }
+}
+
+// A pressure equal to p_ref everywhere adds no force; a uniform p - p_ref adds forces that sum to
+// zero (a pure surface traction: only nodes of the block's surface cells get any).
+TEST(NodeCellOperators, UniformPressureStressIsASurfaceTraction) {
+  for (const char* shape : {"linear", "bspline2"}) {
+    auto s = scene(2);
+    s.mpm.shape_function = shape;
+    MpmSolver solver(s, self());
+    start(solver);
+    solver.computeInternalForces();
+    const core::Box owned = solver.decomposition().cellBox(0);
+    const double pRef = solver.cells().referencePressure();
+    core::Field pc("p", core::Centering::Cell, owned, 1, 0, pRef);
+    const Grid& g = solver.grid();
+    core::Field before = g.externalForce;
+    solver.cells().addCellPressureStress(pc);
+    core::forEach(g.externalForce.box(), [&](int i, int j, int k) {
+      for (int d = 0; d < 2; ++d) EXPECT_EQ(g.externalForce(i, j, k, d), before(i, j, k, d)) << shape;
+    });
+    core::forEach(owned, [&](int i, int j, int k) { pc(i, j, k) = pRef + 1.0e6; });
+    solver.cells().addCellPressureStress(pc);
+    double total[2] = {0, 0}, largest = 0;
+    core::forEach(solver.scene().mesh.nodeBox(), [&](int i, int j, int k) {
+      for (int d = 0; d < 2; ++d) {
+        const double df = g.externalForce(i, j, k, d) - before(i, j, k, d);
+        total[d] += df;
+        largest = std::max(largest, std::abs(df));
+      }
+    });
+    EXPECT_GT(largest, 0.0) << shape;
+    for (double t : total) EXPECT_NEAR(t, 0.0, 1e-12 * largest) << shape;
+  }
 }
