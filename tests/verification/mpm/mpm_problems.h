@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/scene/scene.h"
-#include "observed_order.h"
+#include "../../support/observed_order.h"  // also built into benchmarks/mpm
 #include "mpm/solver/mpm_solver.h"
 
 namespace mpmice::mpm::problems {
