@@ -3,6 +3,7 @@
 at three spacings each, writes the profiles as CSV and draws them (gnuplot) into docs/.
 
 Run from the repository:  python3 benchmarks/coupled/coupled_study.py build [scratch-dir]
+(the scratch directory, default /tmp/coupled_study, must be new or empty)
 Needs h5dump (HDF5 tools) and gnuplot. The asserted figures are those of the ctests
 test_coupled_{stokes,shock_slab,piston}; this script draws what they measure.
 """
@@ -13,6 +14,8 @@ scratch = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else "/tmp/coupled_st
 repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 docs = os.path.join(repo, "docs")
 mpmice = os.path.join(build, "coupler", "mpmice")
+if os.path.exists(scratch) and os.listdir(scratch):
+    sys.exit(f"coupled_study.py: {scratch} is not empty; give a new or empty scratch directory")
 os.makedirs(scratch, exist_ok=True)
 
 
@@ -54,7 +57,9 @@ def write(csv, header, rows):
 
 # ---- Stokes' first problem -------------------------------------------------------------------
 base = open(os.path.join(repo, "configs", "stokes_plate.yaml")).read()
-nu = 1.177 / (101325 / (0.4 * 717.5 * 300))
+mu = float(re.search(r"viscosity: ([0-9.e+-]+)", base).group(1))
+t_end = float(re.search(r"end: ([0-9.e+-]+)", base).group(1))
+nu = mu / (101325 / (0.4 * 717.5 * 300))
 series = []
 print("stokes: dx, max |u - exact| / U")
 for dx in (0.02, 0.01, 0.005):
@@ -65,7 +70,7 @@ for dx in (0.02, 0.01, 0.005):
     rows, err = [], 0
     for i, u in enumerate(uy):
         x = (i + 0.5) * dx
-        ex = math.erf((x - 0.1) / (2 * math.sqrt(nu * 0.01))) if x > 0.1 else 0.0
+        ex = math.erf((x - 0.1) / (2 * math.sqrt(nu * t_end))) if x > 0.1 else 0.0
         rows.append((x, u, ex))
         if x > 0.1:
             err = max(err, abs(u - ex))
@@ -74,7 +79,7 @@ for dx in (0.02, 0.01, 0.005):
     write(csv, "x,u_y,exact", rows)
     series.append((csv, "1:2", f"dx = {dx} (max error {100 * err:.2f} % of U)", "linespoints pt 7 ps 0.5"))
 series.append((series[-1][0], "1:3", "exact U erf((x - 0.1) / 2 sqrt(nu t))", "lines lw 2 dt 2 lc rgb 'black'"))
-plot(os.path.join(docs, "coupled_stokes.png"), "Stokes' first problem, t = 10 ms (nu = 1 m^2/s, plate surface x = 0.1)",
+plot(os.path.join(docs, "coupled_stokes.png"), "Stokes' first problem, t = %g ms (nu = %.2f m^2/s, plate surface x = 0.1)" % (1e3 * t_end, nu),
      "x [m]", "u_y / U", series, "set datafile separator ','\nset xrange [0:0.6]")
 
 # ---- Shock on a steel slab -------------------------------------------------------------------
