@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/scene/scene.h"
+#include "../../support/observed_order.h"  // also built into benchmarks/mpm
 #include "mpm/solver/mpm_solver.h"
 
 namespace mpmice::mpm::problems {
@@ -242,18 +243,7 @@ inline std::vector<EnergySample> runDisks(const core::Scene& s, const core::Comm
   return out;
 }
 
-/// Observed order from errors at spacings h (least-squares slope of ln e against ln h).
-inline double observedOrder(const std::vector<double>& h, const std::vector<double>& e) {
-  const double n = static_cast<double>(h.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t k = 0; k < h.size(); ++k) {
-    const double x = std::log(h[k]), y = std::log(e[k]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
+/// Observed order from errors at spacings h (tests/support/observed_order.h).
+using mpmice::test::observedOrder;
 
 }  // namespace mpmice::mpm::problems

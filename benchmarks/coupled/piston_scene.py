@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Writes the adiabatic piston scene (configs/piston.yaml) at N cells: python3 piston_scene.py N [t_end].
+
+The gas starts in the quasi-static state of a piston moving at v: uniform pressure, velocity
+linear from 0 at each wall to v at the piston (one band per cell, the cell-centre value), so the
+run starts without an acoustic transient (homogeneous compression is an exact solution of Euler's
+equations for a piston at constant speed).
+"""
+import sys
+
+n = int(sys.argv[1]) if len(sys.argv) > 1 else 25
+t_end = float(sys.argv[2]) if len(sys.argv) > 2 else 0.02
+L, xl, xr, v = 1.0, 0.2, 0.6, 10.0
+dx = L / n
+if abs(xl / dx - round(xl / dx)) > 1e-9 or abs(xr / dx - round(xr / dx)) > 1e-9:
+    sys.exit(f"piston_scene.py: N = {n} does not put the piston's faces (x = {xl}, {xr}) on cell faces")
+
+print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
+#
+# A copper piston (rho = 8900 kg/m^3, K = 140 GPa, G = 48 GPa; MPM particles) on 0.2 <= x <= 0.6
+# moves at v = 10 m/s into air (gamma 1.4, 101325 Pa, 300 K) trapped between it and the slip
+# wall at x = 1 (h0 = 0.4 m), and away from the air on 0 <= x <= 0.2 (h_L0 = 0.2 m) behind it.
+# The gas starts in the quasi-static state: uniform pressure, velocity linear from 0 at each wall
+# to v at the piston (one band per cell: this file is written by
+# `python3 benchmarks/coupled/piston_scene.py {n}`), so no acoustic transient is launched.
+# The piston is free (no prescribed motion in MPM): it decelerates under the pressure difference,
+# so the exact answer is the quasi-static one with the piston's own dynamics,
+#   h' = -v,  M v' = -(p(h) - p_L(h)),  p = p0 (h0 / h)^gamma,  p_L = p0 (h_L0 / (h_L0 + h0 - h))^gamma,
+# M = 8900 x 0.4 kg/m^2 (for a constant v, p = p0 (h0 / (h0 - v t))^gamma). At t = 20 ms:
+# displacement 0.19639 m, v = 9.443 m/s, p = 260.78 kPa, p_L = 38.89 kPa.
+# Measured (docs/verification-coupled.md, tests/verification/coupled/test_piston.cpp): the
+# displacement within 0.2 %, the trapped gas's pressure within 4.2 % of p(t) (1.4 % to t = 13 ms; not the 1 % asked:
+# the gas advected into the piston's surface cells, see the docs); finer meshes stop with a
+# non-physical trace-gas temperature after about one cell of travel.
+#
+# Check it:  coupler check configs/piston.yaml
+# Run it:    mpmice configs/piston.yaml
+scene: piston
+description: "Adiabatic piston: copper at 10 m/s into trapped air (h0 = 0.4 m), free piston"
+
+mesh:
+  dim: 1
+  lower: [0.0]
+  upper: [1.0]
+  cells: [{n}]
+
+time:
+  end: {t_end}
+  cfl: 0.4
+
+materials:
+  - name: air
+    kind: fluid
+    eos: {{type: ideal_gas, gamma: 1.4}}
+    specific_heat: 717.5
+  - name: copper
+    kind: solid
+    density: 8900
+    model: {{type: linear_elastic, bulk_modulus: 140.0e9, shear_modulus: 48.0e9}}
+
+geometry:
+  # the gas, one band per cell: u = v x / h_L0 behind the piston, u = v (1 - x) / h0 ahead of it""")
+for i in range(n):
+    x0, x1 = i * dx, (i + 1) * dx
+    xc = 0.5 * (x0 + x1)
+    if x1 <= xl + 1e-12:
+        u = v * xc / xl
+    elif x0 >= xr - 1e-12:
+        u = v * (L - xc) / (L - xr)
+    else:
+        continue
+    print(f"  - {{name: gas{i}, shape: {{type: box, lo: [{x0:.10g}], hi: [{x1:.10g}]}}, material: air, "
+          f"velocity: [{u:.10g}], pressure: 101325, temperature: 300}}")
+print(f"""  - name: piston
+    shape: {{type: box, lo: [{xl}], hi: [{xr}]}}
+    material: copper
+    velocity: [{v}]
+    temperature: 300
+    particles_per_cell: 2
+
+boundary:
+  x-: slip_wall
+  x+: slip_wall
+
+mpm:
+  shape_function: gimp    # linear + USL is unstable where a particle enters a cell (docs/verification-coupled.md)
+  update: usl
+
+ice:
+  advection: second_order
+  exchange: {{momentum: 1.0e15, heat: 0}}
+
+coupling:
+  schedule: monolithic
+
+output:
+  directory: output/piston
+  interval: 0.001""")

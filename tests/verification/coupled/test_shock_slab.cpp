@@ -1,0 +1,157 @@
+// A planar shock in air reflecting from a steel slab through the coupling
+// (configs/shock_slab.yaml). Exact answers from the scene's own states: the pressure behind the
+// shock reflected from a rigid wall (the slab's impedance is ~1e5 times the gas's), and the steel's
+// longitudinal wave speed sqrt((K + 4G/3) / rho) (uniaxial strain). Run at the scene's spacing, 2x
+// it and half of it: the mean pressure of the reflected plateau within 2 % of the exact one at the
+// scene's spacing and converging; the speed of the stress front between two points of the slab
+// (the times its stress passes half the transmitted level) within 2 %.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+#include "coupled_run.h"
+#include "serial_mpi.h"
+
+namespace mpmice::test {
+namespace {
+
+const core::RegionSpec& regionNamed(const core::Scene& s, const std::string& name) {
+  for (const auto& r : s.geometry)
+    if (r.name == name) return r;
+  throw std::runtime_error("shock_slab.yaml: no region '" + name + "'");
+}
+
+core::Scene slabScene(double dx) {
+  core::Scene s = core::loadScene(SHOCK_SLAB_SCENE);
+  const core::RealVect o = s.mesh.origin();
+  const int n = static_cast<int>(std::lround((s.mesh.upper(0) - o[0]) / dx));
+  s.mesh = core::Mesh(1, o, {dx, 1, 1}, {n, 1, 1});
+  return s;
+}
+
+/// The exact answers of the scene (ideal gas; states from the regions "shocked" and "quiet").
+struct SlabExact {
+  double gamma = 0, p1 = 0, p2 = 0, p5 = 0, W = 0, Wr = 0, xShock = 0, xWall = 0, cSteel = 0;
+  [[nodiscard]] double hitTime() const { return (xWall - xShock) / W; }
+};
+
+SlabExact exactFor(const core::Scene& s) {
+  SlabExact e;
+  const core::MaterialSpec& air = *s.material("air");
+  const core::MaterialSpec& steel = *s.material("steel");
+  e.gamma = air.eos.get("gamma");
+  const double g = e.gamma, R = (g - 1) * air.specific_heat;
+  const auto& shocked = regionNamed(s, "shocked");
+  const auto& quiet = regionNamed(s, "quiet");
+  e.p1 = *quiet.pressure;
+  const double rho1 = e.p1 / (R * quiet.temperature);
+  e.p2 = *shocked.pressure;
+  const double rho2 = *shocked.density, u2 = shocked.velocity[0];
+  e.W = rho2 * u2 / (rho2 - rho1);  // mass conservation across the incident shock
+  e.xShock = shocked.shape.hi[0];
+  e.xWall = regionNamed(s, "slab").shape.lo[0];
+  // Reflected shock into state 2 bringing the gas to rest: u2 = (p5 - p2) sqrt(A / (p5 + B)).
+  const double A = 2 / ((g + 1) * rho2), B = (g - 1) / (g + 1) * e.p2;
+  double lo = e.p2, hi = 1e3 * e.p2;
+  for (int k = 0; k < 200; ++k) {
+    const double m = 0.5 * (lo + hi);
+    ((m - e.p2) * std::sqrt(A / (m + B)) < u2 ? lo : hi) = m;
+  }
+  e.p5 = 0.5 * (lo + hi);
+  const double r = e.p5 / e.p2;
+  const double rho5 = rho2 * ((g + 1) * r + (g - 1)) / ((g - 1) * r + (g + 1));
+  e.Wr = rho2 * u2 / (rho5 - rho2);
+  const double K = steel.constitutive.get("bulk_modulus"), G = steel.constitutive.get("shear_modulus");
+  e.cSteel = std::sqrt((K + 4 * G / 3) / steel.density);
+  return e;
+}
+
+struct SlabResult {
+  double plateauMean = 0, plateauMin = 0, plateauMax = 0, frontSpeed = 0;
+};
+
+SlabResult runSlab(double dx) {
+  CoupledRun run(slabScene(dx));
+  const core::Scene& s = run.scene;
+  const SlabExact ex = exactFor(s);
+  const double slabEnd = regionNamed(s, "slab").shape.hi[0];
+  // Two probes in the slab, a sixth and five sixths through it: the particles nearest them.
+  const auto& p = run.mpm.particles();
+  const double probeX[2] = {ex.xWall + (slabEnd - ex.xWall) / 6, ex.xWall + 5 * (slabEnd - ex.xWall) / 6};
+  std::int64_t probeId[2] = {-1, -1};
+  double x0[2] = {0, 0};
+  for (int q = 0; q < 2; ++q) {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (std::abs(p.x[0][i] - probeX[q]) < best) {
+        best = std::abs(p.x[0][i] - probeX[q]);
+        probeId[q] = p.id[i];
+        x0[q] = p.x[0][i];
+      }
+  }
+  // The time each probe's sigma_xx first passes half the transmitted level (linear in the step).
+  const double half = -0.5 * (ex.p5 - ex.p1);
+  double crossing[2] = {-1, -1}, last[2] = {0, 0}, lastT = 0;
+  run.runTo(s.time.end, [&] {
+    for (int q = 0; q < 2; ++q) {
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.id[i] != probeId[q]) continue;
+        const double sxx = p.stress[0][i];
+        if (crossing[q] < 0 && sxx < half) crossing[q] = lastT + (run.time() - lastT) * (last[q] - half) / (last[q] - sxx);
+        last[q] = sxx;
+      }
+    }
+    lastT = run.time();
+  });
+  SlabResult out;
+  EXPECT_GT(crossing[0], 0) << "the stress front never reached the first probe";
+  EXPECT_GT(crossing[1], 0) << "the stress front never reached the second probe";
+  out.frontSpeed = (x0[1] - x0[0]) / (crossing[1] - crossing[0]);
+  // The reflected plateau: from a quarter of the way behind the reflected shock to two cells off
+  // the slab, pure gas cells only.
+  const double t = run.time(), xr = ex.xWall - ex.Wr * (t - ex.hitTime());
+  const int air = s.materialIndex("air");
+  const auto& theta = run.ice.state().mat[static_cast<std::size_t>(air)].theta;
+  double sum = 0, mn = std::numeric_limits<double>::max(), mx = 0;
+  int count = 0;
+  const core::Box& b = run.ice.ownedBox();
+  for (int i = b.lo[0]; i <= b.hi[0]; ++i) {
+    const double x = s.mesh.cellCenter(0, i);
+    if (x < xr + 0.25 * (ex.xWall - xr) || x > ex.xWall - 2 * dx || theta(i, 0, 0) < 0.999) continue;
+    const double pc = run.ice.pressure()(i, 0, 0);
+    sum += pc;
+    mn = std::min(mn, pc);
+    mx = std::max(mx, pc);
+    ++count;
+  }
+  EXPECT_GT(count, 5) << "no reflected plateau at dx " << dx;
+  out.plateauMean = sum / count;
+  out.plateauMin = mn;
+  out.plateauMax = mx;
+  return out;
+}
+
+TEST(ShockOnSteelSlab, ReflectedPressureAndSteelWaveSpeed) {
+  const core::Scene scene = core::loadScene(SHOCK_SLAB_SCENE);
+  const SlabExact ex = exactFor(scene);
+  const double dx0 = scene.mesh.spacing()[0];
+  std::printf("exact: p5 %.6g Pa, reflected shock %.4g m/s, steel c_L %.5g m/s\n", ex.p5, ex.Wr, ex.cSteel);
+  std::vector<double> dxs = {2 * dx0, dx0, 0.5 * dx0}, pErr, cErr;
+  for (double dx : dxs) {
+    const SlabResult r = runSlab(dx);
+    pErr.push_back(std::abs(r.plateauMean - ex.p5) / ex.p5);
+    cErr.push_back(std::abs(r.frontSpeed - ex.cSteel) / ex.cSteel);
+    std::printf("dx %.4g: plateau mean %.6g (error %.4f; min %.4g, max %.4g), front speed %.5g (error %.4f)\n", dx,
+                r.plateauMean, pErr.back(), r.plateauMin, r.plateauMax, r.frontSpeed, cErr.back());
+  }
+  std::printf("reflected pressure: fitted order %.3f\n", observedOrder(dxs, pErr));
+  EXPECT_LT(pErr[1], 0.02) << "reflected pressure at the scene's spacing";
+  EXPECT_LT(pErr[2], pErr[0]) << "the reflected pressure converges";
+  for (std::size_t k = 0; k < dxs.size(); ++k) EXPECT_LT(cErr[k], 0.02) << "steel wave speed at dx " << dxs[k];
+}
+
+}  // namespace
+}  // namespace mpmice::test
