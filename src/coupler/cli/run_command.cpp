@@ -21,13 +21,10 @@
 
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
+#include "coupler/cli/program_locator.h"
 #include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
 #include "core/version.h"
-
-#ifndef MPMICE_MPIRUN_PATH
-#define MPMICE_MPIRUN_PATH "mpirun"
-#endif
 
 namespace mpmice::coupler {
 
@@ -52,7 +49,7 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
     const std::string solver = scene.coupling.interface.openfoam_solver;
-    const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
+    const std::string mpm = locateProgram("mpm_solver", binDir, ownDirectory());
     plan.programs = {"mpm_solver", solver};
     plan.ranks = {mpmRanks, 1};
     plan.executables = {mpm};
@@ -74,9 +71,9 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
   plan.argv = {mpirun};
   for (std::size_t p = 0; p < plan.programs.size(); ++p) {
     if (p) plan.argv.emplace_back(":");
-    const fs::path exe = fs::path(binDir) / plan.programs[p] / plan.programs[p];
-    plan.executables.push_back(exe.string());
-    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe.string(), sceneFile});
+    const std::string exe = locateProgram(plan.programs[p], binDir, ownDirectory());
+    plan.executables.push_back(exe);
+    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe, sceneFile});
   }
   return plan;
 }
@@ -108,13 +105,6 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
 }
 
 namespace {
-
-std::string ownBinDir() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return ".";
-  return exe.parent_path().parent_path().string();  // <bin>/coupler/coupler -> <bin>
-}
 
 volatile std::sig_atomic_t g_stopSignal = 0;
 
@@ -240,15 +230,18 @@ void describeRun(CLI::App& app, RunOptions& o) {
   app.add_option("--ice-ranks", o.iceRanks, "ICE ranks (default: the scene's coupling.ranks.ice)")
       ->type_name("N")->check(ranks);
   app.add_option("--bin-dir", o.binDir,
-                 "the build directory holding mpm_solver/mpm_solver and ice_solver/ice_solver "
-                 "(default: the one of this coupler)")
+                 "where the programs are: an installed bin directory (DIR/mpm_solver, DIR/ice_solver) or a "
+                 "build directory (DIR/mpm_solver/mpm_solver, DIR/ice_solver/ice_solver); the OpenFOAM adapter "
+                 "is looked for in DIR/../lib or DIR/adapters/openfoam (default: beside this coupler, then its "
+                 "build tree, then PATH)")
       ->type_name("DIR");
   app.add_flag("--dry-run", o.dryRun, "print the launch line without running it");
   app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
   app.footer("Sample runs:\n"
              "  coupler run configs/pressurized_cylinder.yaml\n"
              "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
-             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n");
+             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n"
+             "  coupler run --bin-dir /opt/mpmice/bin configs/pressurized_cylinder.yaml\n");
 }
 
 }  // namespace
@@ -262,7 +255,6 @@ std::string runUsage() {
 
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   RunOptions o;
-  o.binDir = ownBinDir();
   {
     CLI::App app("", "coupler run");
     describeRun(app, o);
@@ -291,10 +283,16 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
     std::string fluidCase;
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
-    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
-    for (const auto& exe : plan.executables)
-      if (!fs::exists(exe))
-        throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");
+    const LaunchPlan plan =
+        composeLaunch(scene, sceneFile, binDir, locateLaunchHelper(ownDirectory()), mpmRanks, iceRanks, fluidCase);
+    for (std::size_t p = 0; p < plan.executables.size(); ++p)
+      if (!fs::exists(plan.executables[p]))
+        throw std::invalid_argument(
+            "coupler run: " + plan.programs[p] + " not found (" +
+            (binDir.empty() ? "not beside this coupler in " + ownDirectory() + ", not in its build tree, not on PATH"
+                            : "neither " + shellLine(programCandidates(plan.programs[p], binDir, ownDirectory())) +
+                                  " exists") +
+            "); build or install it, or point --bin-dir at the directory that holds it");
     if (plan.programs.size() == 1)
       out << "coupler: scene '" << scene.name << "' has " << (scene.fluids().empty() ? "no fluid" : "no solid")
           << ": " << plan.programs[0] << " alone on " << plan.ranks[0] << (plan.ranks[0] == 1 ? " rank" : " ranks")
