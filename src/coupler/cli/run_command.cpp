@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "coupler/cli/launch_output.h"
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
 #include "coupler/cli/program_locator.h"
@@ -141,12 +142,13 @@ class StopSignals {
   struct sigaction oldInt_ {}, oldTerm_ {};
 };
 
-/// Runs the launch without a shell, streaming its output through `out`. SIGINT/SIGTERM to the
+/// Runs the launch without a shell, its output through LaunchOutput (cli/launch_output.h) to `out`. SIGINT/SIGTERM to the
 /// coupler go to the launch's process group; the coupler waits for it (SIGKILL after 10 s).
-int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
+int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std::unique_ptr<core::LogFile> fluidLog) {
   const StopSignals signals;
   Process launch(plan.argv);
-  std::string all;
+  const int fluidProgram = fluidLog ? static_cast<int>(plan.programs.size()) - 1 : -1;
+  LaunchOutput output(plan, out, std::move(fluidLog), fluidProgram);
   char buf[4096];
   int forwarded = 0;
   auto forwardedAt = std::chrono::steady_clock::now();
@@ -175,12 +177,11 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
     const ssize_t n = read(launch.output(), buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;  // end of output: every writer has closed the pipe
-    out.write(buf, n);
-    out << std::flush;
-    all.append(buf, static_cast<std::size_t>(n));
-    if (all.size() > (1u << 20)) all.erase(0, all.size() - (1u << 19));  // keep the tail
+    output.feed(std::string_view(buf, static_cast<std::size_t>(n)));
   }
   const int code = launch.wait();
+  output.finish(code == 0 && forwarded == 0);
+  const std::string& all = output.text();
   if (forwarded != 0) {
     err << "coupler: stopped by " << signalName(forwarded) << "; the launch ended with status " << code << "\n";
     return 128 + forwarded;
@@ -210,7 +211,9 @@ void describeRun(CLI::App& app, RunOptions& o) {
       "OpenFOAM solver for coupling.fluid: openfoam; one program when the scene has one kind of "
       "material), prints it, runs it without a shell and names the participant behind any failure. "
       "SIGINT/SIGTERM are forwarded to the launch (exit 128 + signal); the output directory is locked "
-      "for the run.");
+      "for the run. The terminal shows the progress and one labelled summary per side (steps, compute and "
+      "wait time, coupling iterations); each program keeps its output in <output>/log.<program>, the "
+      "OpenFOAM solver's in <output>/log.<solver>.");
   app.get_formatter()->label("Usage", "usage");
   app.set_help_flag("-h,--help", "print this help and exit");
   app.set_version_flag("-V,--version", core::versionLine("coupler"), "print the version and exit");
@@ -304,14 +307,20 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
                   ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
                   : std::to_string(iceRanks) + " ICE ranks")
           << "\n";
-    out
-        << "coupler: " << plan.commandLine() << "\n"
-        << std::flush;
+    // --tag-output: each piece of output names its world rank, so the coupler sorts it by program
+    // (cli/launch_output.h: the OpenFOAM solver's lines to its log, one labelled summary per side).
+    LaunchPlan tagged = plan;
+    tagged.argv.insert(tagged.argv.begin() + 1, "--tag-output");
+    out << "coupler: " << tagged.commandLine() << "\n" << std::flush;
     if (dryRun) return 0;
     // Debian's OpenFOAM finds its etc/ through WM_PROJECT_DIR (exported to the launch by -x).
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam) setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
 
-    return runLaunch(plan, out, err);
+    std::unique_ptr<core::LogFile> fluidLog;  // <output>/log.<solver>: the OpenFOAM solver's output
+    if (scene.coupling.fluid == core::FluidSolver::OpenFoam)
+      fluidLog = std::make_unique<core::LogFile>(core::logFilePath(scene, plan.programs.back()), plan.programs.back(), scene,
+                                                 "coupler");
+    return runLaunch(tagged, out, err, std::move(fluidLog));
   } catch (const core::SceneError& e) {
     err << e.what() << "\n";
     return 2;

@@ -56,9 +56,9 @@ mkdir -p "$work/run" && cd "$work/run"
 out=$("$prefix/bin/coupler" run "$scenes/tiny_output_interval.yaml" 2>&1); status=$?
 echo "$out" | grep -v "^\s*$" | tail -n 12
 [ "$status" -eq 0 ] || fail "installed coupler run ended $status"
-grep -q "coupler: $prefix/libexec/mpmice/mpirun -np 1 $prefix/bin/mpm_solver .* : -np 1 $prefix/bin/ice_solver " <<< "$out" ||
+grep -q "coupler: $prefix/libexec/mpmice/mpirun --tag-output -np 1 $prefix/bin/mpm_solver .* : -np 1 $prefix/bin/ice_solver " <<< "$out" ||
   fail "the installed coupler did not launch the installed programs through the installed helper"
-grep -q "3 iterations in 3 steps" <<< "$out" || fail "the launch did not run its 3 steps"
+grep -q "coupler: mpm_solver (1 rank): 3 steps to t = " <<< "$out" || fail "the launch did not run its 3 steps"
 ls output/*_solid*.h5 > /dev/null 2>&1 || fail "no solid output"
 # A coupler without its programs beside it finds them on PATH.
 mkdir -p "$work/elsewhere" && cp "$prefix/bin/coupler" "$work/elsewhere/"
