@@ -13,6 +13,7 @@
 //    output, totals CSV, summary). Errors: message on stderr, exit code 1.
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
@@ -21,6 +22,7 @@
 #include "coupler/launch/participant.h"
 #include "couplings/volume/fluid/fluid_participant.h"
 #include "core/health/health.h"
+#include "core/io/log_file.h"
 #include "ice/solver/standalone_run.h"
 #include "common/scene_command_line.h"
 
@@ -41,6 +43,7 @@ int main(int argc, char** argv) {
   // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
   // would otherwise wait its coupling.timeout for a participant that has gone).
   bool coupled = false, localRoot = session.world().root();
+  std::unique_ptr<core::LogFile> logFile;  // <output>/log.ice_solver: what this program prints, errors included
   try {
     // 1. The scene; join the launch.
     const core::Scene scene = core::loadScene(line.scene);
@@ -48,6 +51,7 @@ int main(int argc, char** argv) {
     coupled = participant.coupled();
     localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "ice_solver");
+    logFile = core::LogFile::teeProgramOutput(participant.local(), scene, "ice_solver");  // after the lock
     if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
     return ice::runStandalone(scene, participant.local(), std::cout);  // 2.
   } catch (const core::SceneError& e) {

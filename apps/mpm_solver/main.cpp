@@ -20,6 +20,7 @@
 #include "couplings/volume/solid/solid_participant.h"
 #include "couplings/surface/solid/surface_solid_participant.h"
 #include "core/health/health.h"
+#include "core/io/log_file.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
 #include "core/util/error_line.h"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   // alone must reach the terminal from this program's rank 0 and end the whole launch (the peer
   // would otherwise wait its coupling.timeout for a participant that has gone).
   bool coupled = false, localRoot = session.world().root();
+  std::unique_ptr<core::LogFile> logFile;  // <output>/log.mpm_solver: what this program prints, errors included
   try {
     // 1. Scene and launch.
     const core::Scene scene = core::loadScene(line.scene);
@@ -51,6 +53,7 @@ int main(int argc, char** argv) {
     coupled = participant.coupled();
     localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "mpm_solver");
+    logFile = core::LogFile::teeProgramOutput(participant.local(), scene, "mpm_solver");  // after the lock
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {

@@ -9,8 +9,10 @@
 // 2. Run it (src/couplings/volume/monolithic/monolithic_run.h): both solvers on one
 //    decomposition, the scene's coupling schedule, output at each output time.
 #include <iostream>
+#include <memory>
 
 #include "core/health/health.h"
+#include "core/io/log_file.h"
 #include "core/io/run_lock.h"
 #include "core/parallel/mpi_session.h"
 #include "core/scene/scene.h"
@@ -32,9 +34,11 @@ int main(int argc, char** argv) {
       "  mpmice configs/pressurized_cylinder.yaml\n"
       "  scripts/mpirun -np 2 mpmice configs/pressurized_cylinder.yaml\n");
   if (line.exit) return *line.exit;
+  std::unique_ptr<core::LogFile> logFile;  // <output>/log.mpmice: what it prints, errors included
   try {
     const core::Scene scene = core::loadScene(line.scene);  // 1.
     const auto lock = core::lockOutputDirectory(comm, scene, "mpmice", &std::cerr);  // every rank learns a refusal
+    logFile = core::LogFile::teeProgramOutput(comm, scene, "mpmice");  // after the lock
     return coupler::runMonolithic(scene, comm, std::cout);  // 2.
   } catch (const core::SceneError& e) {
     if (comm.root()) std::cerr << e.what() << "\n";

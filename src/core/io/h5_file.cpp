@@ -1,5 +1,6 @@
 #include "core/io/h5_file.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
@@ -201,6 +202,32 @@ void H5Group::writeAttribute(const std::string& name, const std::vector<double>&
 }
 void H5Group::writeAttribute(const std::string& name, const std::vector<std::int64_t>& v) const {
   writeAttr(id(), H5T_NATIVE_INT64, name, v, file_, name_);
+}
+void H5Group::writeAttribute(const std::string& name, const std::string& text) const {
+  if (H5Aexists(id(), name.c_str()) > 0) h5Check(H5Adelete(id(), name.c_str()), "replacing attribute " + name, file_, name_);
+  H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type of attribute " + name, file_, name_);
+  h5Check(H5Tset_size(type.id(), std::max<std::size_t>(1, text.size())), "sizing attribute " + name, file_, name_);
+  h5Check(H5Tset_strpad(type.id(), H5T_STR_NULLPAD), "padding attribute " + name, file_, name_);
+  h5Check(H5Tset_cset(type.id(), H5T_CSET_UTF8), "character set of attribute " + name, file_, name_);
+  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space of attribute " + name, file_, name_);
+  H5Handle attr(H5Acreate2(id(), name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                "creating attribute " + name, file_, name_);
+  const std::string bytes = text.empty() ? std::string(1, '\0') : text;
+  h5Check(H5Awrite(attr.id(), type.id(), bytes.data()), "writing attribute " + name, file_, name_);
+}
+std::string H5Group::readAttributeString(const std::string& name) const {
+  if (H5Aexists(id(), name.c_str()) <= 0)
+    throw std::runtime_error("HDF5: no attribute '" + name + "' on '" + name_ + "' in file '" + file_ + "'");
+  H5Handle attr(H5Aopen(id(), name.c_str(), H5P_DEFAULT), H5Aclose, "opening attribute " + name, file_, name_);
+  H5Handle type(H5Aget_type(attr.id()), H5Tclose, "type of attribute " + name, file_, name_);
+  if (H5Tget_class(type.id()) != H5T_STRING || H5Tis_variable_str(type.id()) > 0)
+    throw std::runtime_error("HDF5: attribute '" + name + "' on '" + name_ + "' in file '" + file_ +
+                             "' is not a fixed-length string");
+  const std::size_t n = H5Tget_size(type.id());
+  std::string s(n, '\0');
+  h5Check(H5Aread(attr.id(), type.id(), s.data()), "reading attribute " + name, file_, name_);
+  s.erase(std::find(s.begin(), s.end(), '\0'), s.end());
+  return s;
 }
 bool H5Group::hasAttribute(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }
 std::vector<double> H5Group::readAttributeDouble(const std::string& name) const {

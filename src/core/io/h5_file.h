@@ -105,9 +105,12 @@ class H5Group : public H5Handle {
 
   void writeAttribute(const std::string& name, const std::vector<double>& v) const;
   void writeAttribute(const std::string& name, const std::vector<std::int64_t>& v) const;
+  /// A UTF-8 text as a scalar fixed-length string attribute (h5py: bytes, .decode()).
+  void writeAttribute(const std::string& name, const std::string& text) const;
   [[nodiscard]] bool hasAttribute(const std::string& name) const;
   [[nodiscard]] std::vector<double> readAttributeDouble(const std::string& name) const;
   [[nodiscard]] std::vector<std::int64_t> readAttributeInt(const std::string& name) const;
+  [[nodiscard]] std::string readAttributeString(const std::string& name) const;
 
  private:
   std::string path(const std::string& child) const;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/io/h5_file.h"
+#include "core/io/run_metadata.h"
 
 namespace mpmice::core {
 
@@ -141,6 +142,8 @@ std::string OutputWriter::writeStep(int step, double time, const std::vector<con
     root.writeAttribute("nranks", std::vector<std::int64_t>{comm_.size()});
     const auto& per = decomp_.periodic();
     root.writeAttribute("periodic", std::vector<std::int64_t>{per[0], per[1], per[2]});
+    // What the run is (program, version, command line, ranks, start, scene): its RunRecord's.
+    if (const RunMetadata* run = RunMetadata::current()) run->writeTo(root);
     const H5Group cells = root.group("grid/cell");
     const H5Group nodes = root.group("grid/node");
     for (const Field* f : gridFields) {

@@ -11,7 +11,9 @@
 /// closing node layer (node n, the image of node 0) is written from the owner of node 0, so node
 /// datasets always have n+1 nodes. Particles are concatenated in rank order under `/particles/`
 /// (`position` is (n, 3); scalars (n); vectors (n, ncomp)). The root group carries the
-/// attributes time, step, dim, origin, spacing, cells, periodic and nranks. After each file, rank 0
+/// attributes time, step, dim, origin, spacing, cells, periodic and nranks, and, inside a run, the
+/// run's description (core/io/run_metadata.h: program, version, command line, ranks, rank layout,
+/// host, start, scene file, hash and the scene as understood). After each file, rank 0
 /// rewrites `<dir>/<base>.xmf` over all steps written so far (see XdmfWriter). The layout is
 /// documented in docs/output-format.md.
 #include <string>

@@ -1,26 +1,13 @@
 #include "core/io/run_record.h"
 
-#include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
-#include "core/parallel/mpi_session.h"
-#include "core/version.h"
 
 namespace mpmice::core {
 
 namespace {
-std::string utcNow() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char b[32];
-  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return b;
-}
 std::string yamlQuoted(const std::string& s) {
   std::string q = "\"";
   for (char c : s) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
@@ -29,10 +16,14 @@ std::string yamlQuoted(const std::string& s) {
 }  // namespace
 
 RunRecord::RunRecord(const Scene& scene, const Comm& comm, std::string program, const std::string& suffix)
-    : scene_(scene), writer_(scene.output.enabled && comm.root()), program_(std::move(program)), ranks_(comm.size()) {
+    : scene_(scene), writer_(scene.output.enabled && comm.root()), meta_(RunMetadata::describe(scene, comm, program)) {
   path_ = scene.output.directory + "/" + scene.name + suffix + "_run.yaml";
-  started_ = utcNow();
+  RunMetadata::publish(&meta_);
   write("running");
+}
+
+RunRecord::~RunRecord() {
+  if (RunMetadata::current() == &meta_) RunMetadata::publish(nullptr);
 }
 
 void RunRecord::completed() { write("completed"); }
@@ -40,17 +31,16 @@ void RunRecord::completed() { write("completed"); }
 void RunRecord::write(const std::string& status) const {
   if (!writer_) return;
   std::filesystem::create_directories(scene_.output.directory);
-  char host[256] = {0};
-  gethostname(host, sizeof host - 1);
   std::ostringstream o;
   o << "# What this run was (src/core/io/run_record.h).\n"
-    << "program: " << program_ << "\nversion: " << yamlQuoted(std::string(kProjectVersion) + " (" + kGitDescribe + ")")
-    << "\ncommand_line: " << yamlQuoted(MpiSession::commandLine()) << "\nranks: " << ranks_
-    << "\nhost: " << yamlQuoted(host) << "\nstarted: " << started_
+    << "program: " << meta_.program << "\nversion: " << yamlQuoted(meta_.version)
+    << "\ncommand_line: " << yamlQuoted(meta_.command_line) << "\nranks: " << meta_.ranks
+    << "\nlaunch_ranks: " << meta_.launch_ranks << "\nrank_layout: " << yamlQuoted(meta_.rank_layout)
+    << "\nhost: " << yamlQuoted(meta_.host) << "\nstarted: " << meta_.started
     << "\nended: " << (status == "running" ? std::string("null") : utcNow()) << "\nstatus: " << status
-    << "\nscene_file: " << yamlQuoted(scene_.file) << "\nscene_hash: " << sceneHash(scene_)
+    << "\nscene_file: " << yamlQuoted(meta_.scene_file) << "\nscene_hash: " << meta_.scene_hash
     << "\nscene_as_understood: |\n";
-  std::istringstream dump(dumpScene(scene_));
+  std::istringstream dump(meta_.scene_as_understood);
   for (std::string line; std::getline(dump, line);) o << "  " << line << "\n";
   const std::string tmp = path_ + ".part";
   {

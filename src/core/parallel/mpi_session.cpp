@@ -42,6 +42,18 @@ MpiSession::~MpiSession() {
 
 Comm MpiSession::world() const { return Comm(MPI_COMM_WORLD); }
 
+int MpiSession::worldSize() {
+  int n = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+int MpiSession::worldRank() {
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
 void MpiSession::abortAll(int code) {
   MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);

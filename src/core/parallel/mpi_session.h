@@ -22,6 +22,10 @@ class MpiSession {
   /// This program's command line as given (arguments shell-quoted where needed), for the run
   /// record; empty before a session exists.
   [[nodiscard]] static const std::string& commandLine();
+  /// The size of the whole launch and this process's rank in it (both programs of an MPMD
+  /// launch), for the run's description (core/io/run_metadata.h).
+  [[nodiscard]] static int worldSize();
+  [[nodiscard]] static int worldRank();
   /// Aborts every process of the launch with the given code.
   [[noreturn]] static void abortAll(int code);
 };

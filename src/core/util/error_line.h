@@ -9,5 +9,7 @@
 namespace mpmice::core {
 
 void writeErrorLine(const std::string& program, const std::string& message);
+/// Error lines also go to `fd` (the program's log file, core/io/log_file.h); -1: stderr only.
+void copyErrorLinesTo(int fd);
 
 }  // namespace mpmice::core

@@ -9,14 +9,11 @@
 
 #include "core/io/text_file.h"
 #include "coupler/cli/process.h"
+#include "coupler/cli/program_locator.h"
 
 namespace mpmice::coupler {
 
 namespace fs = std::filesystem;
-
-std::string adapterLibraryPath(const std::string& binDir) {
-  return (fs::path(binDir) / "adapters" / "openfoam" / "libmpmiceFoamAdapter.so").string();
-}
 
 std::string adapterEntry(const std::string& adapterLibrary, const std::string& sceneFile) {
   return "    // added by `coupler run`: the fluid side of the surface coupling\n"
@@ -87,10 +84,11 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
   if (!fs::exists(src / "system" / "controlDict"))
     throw std::invalid_argument(where + ": coupling.interface.case: '" + iface.openfoam_case + "' (" + src.string() +
                                 ") is not an OpenFOAM case: no system/controlDict there");
-  const std::string lib = adapterLibraryPath(binDir);
+  const std::string lib = locateAdapterLibrary(binDir, ownDirectory());
   if (!fs::exists(lib))
     throw std::invalid_argument("coupler run: the OpenFOAM adapter " + lib +
-                                " is not built (needs OpenFOAM's headers: scripts/openfoam_headers.sh, then cmake)");
+                                " is not built or installed (needs OpenFOAM's headers: scripts/openfoam_headers.sh, then cmake; "
+                                "--bin-dir names where to look)");
   const fs::path dst = fs::absolute(fs::path(scene.output.directory) / src.filename());
   copyCaseFresh(src, dst);
   const fs::path cd = dst / "system" / "controlDict";

@@ -23,14 +23,11 @@ std::string withFunctionObject(const std::string& controlDict, const std::string
 /// scene key (missing case, no controlDict, missing adapter library) and std::runtime_error when
 /// blockMesh fails (with the tail of its log).
 std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                                std::ostream& out);
+                                std::ostream& out);  // binDir: --bin-dir (cli/program_locator.h)
 
 /// Copies the case folder `source` to `target`, replacing an earlier copy made by coupler run.
 /// Throws std::invalid_argument, deleting nothing, when target is, contains or lies inside source,
 /// or when target exists and is not such a copy.
 void copyCaseFresh(const std::filesystem::path& source, const std::filesystem::path& target);
-
-/// The adapter library under a build directory.
-std::string adapterLibraryPath(const std::string& binDir);
 
 }  // namespace mpmice::coupler

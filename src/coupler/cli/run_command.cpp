@@ -19,15 +19,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "coupler/cli/launch_output.h"
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
+#include "coupler/cli/program_locator.h"
 #include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
 #include "core/version.h"
-
-#ifndef MPMICE_MPIRUN_PATH
-#define MPMICE_MPIRUN_PATH "mpirun"
-#endif
 
 namespace mpmice::coupler {
 
@@ -52,7 +50,7 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
     const std::string solver = scene.coupling.interface.openfoam_solver;
-    const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
+    const std::string mpm = locateProgram("mpm_solver", binDir, ownDirectory());
     plan.programs = {"mpm_solver", solver};
     plan.ranks = {mpmRanks, 1};
     plan.executables = {mpm};
@@ -74,9 +72,9 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
   plan.argv = {mpirun};
   for (std::size_t p = 0; p < plan.programs.size(); ++p) {
     if (p) plan.argv.emplace_back(":");
-    const fs::path exe = fs::path(binDir) / plan.programs[p] / plan.programs[p];
-    plan.executables.push_back(exe.string());
-    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe.string(), sceneFile});
+    const std::string exe = locateProgram(plan.programs[p], binDir, ownDirectory());
+    plan.executables.push_back(exe);
+    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe, sceneFile});
   }
   return plan;
 }
@@ -108,13 +106,6 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
 }
 
 namespace {
-
-std::string ownBinDir() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return ".";
-  return exe.parent_path().parent_path().string();  // <bin>/coupler/coupler -> <bin>
-}
 
 volatile std::sig_atomic_t g_stopSignal = 0;
 
@@ -151,12 +142,13 @@ class StopSignals {
   struct sigaction oldInt_ {}, oldTerm_ {};
 };
 
-/// Runs the launch without a shell, streaming its output through `out`. SIGINT/SIGTERM to the
+/// Runs the launch without a shell, its output through LaunchOutput (cli/launch_output.h) to `out`. SIGINT/SIGTERM to the
 /// coupler go to the launch's process group; the coupler waits for it (SIGKILL after 10 s).
-int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
+int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std::unique_ptr<core::LogFile> fluidLog) {
   const StopSignals signals;
   Process launch(plan.argv);
-  std::string all;
+  const int fluidProgram = fluidLog ? static_cast<int>(plan.programs.size()) - 1 : -1;
+  LaunchOutput output(plan, out, std::move(fluidLog), fluidProgram);
   char buf[4096];
   int forwarded = 0;
   auto forwardedAt = std::chrono::steady_clock::now();
@@ -185,12 +177,11 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
     const ssize_t n = read(launch.output(), buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;  // end of output: every writer has closed the pipe
-    out.write(buf, n);
-    out << std::flush;
-    all.append(buf, static_cast<std::size_t>(n));
-    if (all.size() > (1u << 20)) all.erase(0, all.size() - (1u << 19));  // keep the tail
+    output.feed(std::string_view(buf, static_cast<std::size_t>(n)));
   }
   const int code = launch.wait();
+  output.finish(code == 0 && forwarded == 0);
+  const std::string& all = output.text();
   if (forwarded != 0) {
     err << "coupler: stopped by " << signalName(forwarded) << "; the launch ended with status " << code << "\n";
     return 128 + forwarded;
@@ -220,7 +211,9 @@ void describeRun(CLI::App& app, RunOptions& o) {
       "OpenFOAM solver for coupling.fluid: openfoam; one program when the scene has one kind of "
       "material), prints it, runs it without a shell and names the participant behind any failure. "
       "SIGINT/SIGTERM are forwarded to the launch (exit 128 + signal); the output directory is locked "
-      "for the run.");
+      "for the run. The terminal shows the progress and one labelled summary per side (steps, compute and "
+      "wait time, coupling iterations); each program keeps its output in <output>/log.<program>, the "
+      "OpenFOAM solver's in <output>/log.<solver>.");
   app.get_formatter()->label("Usage", "usage");
   app.set_help_flag("-h,--help", "print this help and exit");
   app.set_version_flag("-V,--version", core::versionLine("coupler"), "print the version and exit");
@@ -240,15 +233,18 @@ void describeRun(CLI::App& app, RunOptions& o) {
   app.add_option("--ice-ranks", o.iceRanks, "ICE ranks (default: the scene's coupling.ranks.ice)")
       ->type_name("N")->check(ranks);
   app.add_option("--bin-dir", o.binDir,
-                 "the build directory holding mpm_solver/mpm_solver and ice_solver/ice_solver "
-                 "(default: the one of this coupler)")
+                 "where the programs are: an installed bin directory (DIR/mpm_solver, DIR/ice_solver) or a "
+                 "build directory (DIR/mpm_solver/mpm_solver, DIR/ice_solver/ice_solver); the OpenFOAM adapter "
+                 "is looked for in DIR/../lib or DIR/adapters/openfoam (default: beside this coupler, then its "
+                 "build tree, then PATH)")
       ->type_name("DIR");
   app.add_flag("--dry-run", o.dryRun, "print the launch line without running it");
   app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
   app.footer("Sample runs:\n"
              "  coupler run configs/pressurized_cylinder.yaml\n"
              "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
-             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n");
+             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n"
+             "  coupler run --bin-dir /opt/mpmice/bin configs/pressurized_cylinder.yaml\n");
 }
 
 }  // namespace
@@ -262,7 +258,6 @@ std::string runUsage() {
 
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   RunOptions o;
-  o.binDir = ownBinDir();
   {
     CLI::App app("", "coupler run");
     describeRun(app, o);
@@ -291,10 +286,16 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
     std::string fluidCase;
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
-    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
-    for (const auto& exe : plan.executables)
-      if (!fs::exists(exe))
-        throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");
+    const LaunchPlan plan =
+        composeLaunch(scene, sceneFile, binDir, locateLaunchHelper(ownDirectory()), mpmRanks, iceRanks, fluidCase);
+    for (std::size_t p = 0; p < plan.executables.size(); ++p)
+      if (!fs::exists(plan.executables[p]))
+        throw std::invalid_argument(
+            "coupler run: " + plan.programs[p] + " not found (" +
+            (binDir.empty() ? "not beside this coupler in " + ownDirectory() + ", not in its build tree, not on PATH"
+                            : "neither " + shellLine(programCandidates(plan.programs[p], binDir, ownDirectory())) +
+                                  " exists") +
+            "); build or install it, or point --bin-dir at the directory that holds it");
     if (plan.programs.size() == 1)
       out << "coupler: scene '" << scene.name << "' has " << (scene.fluids().empty() ? "no fluid" : "no solid")
           << ": " << plan.programs[0] << " alone on " << plan.ranks[0] << (plan.ranks[0] == 1 ? " rank" : " ranks")
@@ -306,14 +307,20 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
                   ? "1 " + scene.coupling.interface.openfoam_solver + " rank"
                   : std::to_string(iceRanks) + " ICE ranks")
           << "\n";
-    out
-        << "coupler: " << plan.commandLine() << "\n"
-        << std::flush;
+    // --tag-output: each piece of output names its world rank, so the coupler sorts it by program
+    // (cli/launch_output.h: the OpenFOAM solver's lines to its log, one labelled summary per side).
+    LaunchPlan tagged = plan;
+    tagged.argv.insert(tagged.argv.begin() + 1, "--tag-output");
+    out << "coupler: " << tagged.commandLine() << "\n" << std::flush;
     if (dryRun) return 0;
     // Debian's OpenFOAM finds its etc/ through WM_PROJECT_DIR (exported to the launch by -x).
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam) setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0);
 
-    return runLaunch(plan, out, err);
+    std::unique_ptr<core::LogFile> fluidLog;  // <output>/log.<solver>: the OpenFOAM solver's output
+    if (scene.coupling.fluid == core::FluidSolver::OpenFoam)
+      fluidLog = std::make_unique<core::LogFile>(core::logFilePath(scene, plan.programs.back()), plan.programs.back(), scene,
+                                                 "coupler");
+    return runLaunch(tagged, out, err, std::move(fluidLog));
   } catch (const core::SceneError& e) {
     err << e.what() << "\n";
     return 2;

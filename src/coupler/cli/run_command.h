@@ -3,7 +3,8 @@
 /// prints it, runs it, and names the participant behind any failure.
 ///
 ///   coupler run configs/pressurized_cylinder.yaml
-///   -> scripts/mpirun -np 1 <bin>/mpm_solver/mpm_solver s.yaml : -np 1 <bin>/ice_solver/ice_solver s.yaml
+///   -> scripts/mpirun -np 1 <build>/mpm_solver/mpm_solver s.yaml : -np 1 <build>/ice_solver/ice_solver s.yaml
+///      (installed: <prefix>/libexec/mpmice/mpirun -np 1 <prefix>/bin/mpm_solver s.yaml : ...)
 ///   coupler run configs/flap_openfoam.yaml            (coupling.fluid: openfoam)
 ///   -> scripts/mpirun -x WM_PROJECT_DIR -np 1 <bin>/mpm_solver/mpm_solver s.yaml
 ///        : -np 1 pimpleFoam -case <output>/<case>   (the case prepared by cli/openfoam_case.h)
@@ -35,7 +36,8 @@ struct LaunchPlan {
   [[nodiscard]] std::string describeWorldRank(int worldRank) const;
 };
 
-/// The launch for `sceneFile` with binaries under binDir (<binDir>/mpm_solver/mpm_solver, ...).
+/// The launch for `sceneFile` with the programs found from binDir (--bin-dir; empty: beside this
+/// coupler, its build tree, then PATH; cli/program_locator.h).
 /// coupling.fluid openfoam: mpm_solver and the scene's OpenFOAM solver (serial) in `fluidCase`.
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                          const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "");

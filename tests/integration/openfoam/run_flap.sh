@@ -49,6 +49,10 @@ if [ "$mode" = bad_patch ]; then
   echo "ok: bad patch stopped the run with status $status naming it"; exit 0
 fi
 [ "$status" -eq 0 ] || fail "coupler run ended with status $status"
+# The solver's output is in its log (coupler/cli/launch_output.h), not on the terminal.
+grep -q "^Time = " out/log.pimpleFoam || fail "out/log.pimpleFoam lacks the solver's time steps"
+if grep -q "^Time = " log.txt; then fail "the solver's output reached the terminal"; fi
+grep -q "^coupler: mpm_solver (" log.txt || grep -q "^mpm_solver: done: " log.txt || fail "no labelled mpm_solver summary"
 csv=out/flap_openfoam_coupling.csv; probes=out/flap_openfoam_probes.csv
 [ -f "$csv" ] && [ -f "$probes" ] || fail "missing $csv or $probes"
 rows=$(($(wc -l < "$csv") - 1))
@@ -68,7 +72,7 @@ case "$mode" in
   implicit)
     awk -F, 'NR > 1 && $5 != 1 { exit 1 }' "$csv" || fail "an implicit window did not converge"
     awk -F, 'NR > 1 && $4 >= 2 { n++ } END { exit !(n >= 10) }' "$csv" || fail "implicit windows must iterate (2+ iterations)"
-    grep -q "repeated (iteration" log.txt || fail "the adapter never repeated a window"
+    grep -q "repeated (iteration" out/log.pimpleFoam || fail "the adapter never repeated a window (out/log.pimpleFoam)"
     awk -v u="$tip" 'BEGIN { exit !(u > 1e-3) }' || fail "tip x-displacement $tip" ;;
   one_way)
     awk -F, 'NR > 1 && $6 != 0 { exit 1 }' "$csv" || fail "the solid must not step while the fluid runs (one-way)"

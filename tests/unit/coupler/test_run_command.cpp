@@ -8,6 +8,7 @@
 
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
+#include "coupler/cli/program_locator.h"
 #include "coupler/launch/timed_wait.h"
 #include "coupler/cli/run_command.h"
 #include "core/scene/scene.h"
@@ -205,4 +206,55 @@ TEST(CoupleRun, ATimeoutNamesWhatWasAwaitedOnce) {
             "stopped or hangs");
   EXPECT_EQ(coupler::timeoutMessage("b", "solid state", 3, coupler::Waiting::ForData),
             "coupler: no solid state from participant 'b' within 3 s (coupling.timeout); it has stopped or hangs");
+}
+
+namespace {
+/// A scratch folder with executable stand-ins at the given relative paths.
+std::filesystem::path programTree(const std::string& name, const std::vector<std::string>& files) {
+  const auto root = std::filesystem::temp_directory_path() / ("mpmice_locator_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(root);
+  for (const auto& f : files) {
+    std::filesystem::create_directories((root / f).parent_path());
+    std::ofstream(root / f) << "#!/bin/sh\n";
+    std::filesystem::permissions(root / f, std::filesystem::perms::owner_all);
+  }
+  return root;
+}
+}  // namespace
+
+TEST(CoupleRun, FindsTheProgramsInAnInstalledBinDirectoryOrABuildDirectory) {
+  // --bin-dir: DIR/<program> (installed) first, else DIR/<program>/<program> (a build directory).
+  const auto installed = programTree("installed", {"bin/mpm_solver", "bin/ice_solver", "bin/coupler",
+                                                   "libexec/mpmice/mpirun", "lib/libmpmiceFoamAdapter.so"});
+  EXPECT_EQ(coupler::locateProgram("mpm_solver", (installed / "bin").string(), "/elsewhere"),
+            (installed / "bin" / "mpm_solver").string());
+  const auto build = programTree("build", {"mpm_solver/mpm_solver", "coupler/coupler", "adapters/openfoam/libmpmiceFoamAdapter.so"});
+  EXPECT_EQ(coupler::locateProgram("mpm_solver", build.string(), "/elsewhere"), (build / "mpm_solver" / "mpm_solver").string());
+  // Default: beside the coupler (installed), then the coupler's build tree.
+  EXPECT_EQ(coupler::locateProgram("ice_solver", "", (installed / "bin").string()), (installed / "bin" / "ice_solver").string());
+  EXPECT_EQ(coupler::locateProgram("mpm_solver", "", (build / "coupler").string()), (build / "mpm_solver" / "mpm_solver").string());
+  // The adapter and the launch helper of each layout.
+  EXPECT_EQ(coupler::locateAdapterLibrary("", (installed / "bin").string()),
+            (installed / "lib" / "libmpmiceFoamAdapter.so").string());
+  EXPECT_EQ(coupler::locateAdapterLibrary((installed / "bin").string(), "/elsewhere"),
+            (installed / "lib" / "libmpmiceFoamAdapter.so").string());
+  EXPECT_EQ(coupler::locateAdapterLibrary("", (build / "coupler").string()),
+            (build / "adapters" / "openfoam" / "libmpmiceFoamAdapter.so").string());
+  EXPECT_EQ(coupler::locateLaunchHelper((installed / "bin").string()), (installed / "libexec" / "mpmice" / "mpirun").string());
+  std::filesystem::remove_all(installed);
+  std::filesystem::remove_all(build);
+}
+
+TEST(CoupleRun, FindsTheProgramsOnPathWhenNoneIsBesideTheCoupler) {
+  const auto tree = programTree("path", {"some/bin/ice_solver", "lonely/coupler"});
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  setenv("PATH", ("/nonexistent:" + (tree / "some" / "bin").string()).c_str(), 1);
+  EXPECT_EQ(coupler::locateProgram("ice_solver", "", (tree / "lonely").string()), (tree / "some/bin/ice_solver").string());
+  // Not found: the first place looked (beside the coupler), for the error message. A --bin-dir
+  // is not combined with PATH: what the user named is where the programs must be.
+  EXPECT_EQ(coupler::locateProgram("mpm_solver", "", (tree / "lonely").string()), (tree / "lonely" / "mpm_solver").string());
+  EXPECT_EQ(coupler::locateProgram("ice_solver", "/b", (tree / "lonely").string()), "/b/ice_solver/ice_solver");
+  setenv("PATH", saved.c_str(), 1);
+  std::filesystem::remove_all(tree);
 }
