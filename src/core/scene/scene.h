@@ -184,6 +184,10 @@ struct IceOptions {
   std::vector<ExchangePair> exchange_pairs;  // overrides per pair
   int max_pressure_iterations = 100;
   double pressure_tolerance = 1e-11;
+  // Shock viscosity at faces in compression (du < 0): q = rho (linear c |du| + quadratic du^2),
+  // added to the face pressure (0, 0: off).
+  double shock_viscosity_linear = 0;
+  double shock_viscosity_quadratic = 0;
   bool operator==(const IceOptions&) const = default;
 };
 

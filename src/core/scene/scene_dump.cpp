@@ -250,7 +250,8 @@ void options(std::ostream& o, const Scene& s) {
     << i.pressure_solver << "\n  linear_solver: " << i.linear_solver << "\n  solver_tolerance: "
     << num(i.solver_tolerance) << "\n  solver_max_iterations: " << i.solver_max_iterations
     << "\n  pressure_iterations: " << i.max_pressure_iterations << "\n  pressure_tolerance: "
-    << num(i.pressure_tolerance) << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
+    << num(i.pressure_tolerance) << "\n  shock_viscosity: {linear: " << num(i.shock_viscosity_linear)
+    << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  exchange:\n    momentum: " << num(i.exchange_momentum)
     << "\n    heat: " << num(i.exchange_heat) << "\n";
   if (!i.exchange_pairs.empty()) {
     o << "    pairs:\n";

@@ -32,6 +32,10 @@ class Eos {
   virtual void soundSpeed2(std::size_t n, const double* rho, const double* e, double* c2) const = 0;
   /// e(rho, p).
   [[nodiscard]] virtual double internalEnergy(double rho, double p) const = 0;
+  /// The admissible pressures at fixed specific internal energy e form the open interval
+  /// (pmin, inf): pmin per entry (-inf where the law has no lower end; +inf where no state with
+  /// this e is admissible, e.g. e <= 0 for an ideal gas). The equilibrium pressure never leaves it.
+  virtual void pressureFloor(std::size_t n, const double* e, double* pmin) const;
   /// Part of e that does not depend on temperature (e = cv T + coldEnergy(rho)).
   [[nodiscard]] virtual double coldEnergy(double /*rho*/) const { return 0.0; }
 
@@ -57,8 +61,9 @@ const std::vector<std::string>& eosNames();
 
 /// Solves p(rho) = target for rho > 0 with a safeguarded Newton iteration on an increasing
 /// pressure law; pdp(rho, &p, &dpdrho). Used by EOS without a closed-form inverse.
+/// rhoMax: the law's largest density (p -> inf there; infinity when it has none).
 template <class PDp>
-double invertPressure(double target, double guess, PDp&& pdp);
+double invertPressure(double target, double guess, PDp&& pdp, double rhoMax);
 
 }  // namespace mpmice::ice
 

@@ -3,7 +3,7 @@
 /// from Derived's p(rho, e) and dp/drho at fixed e, so each law writes only its own formulas.
 ///
 /// Derived provides eval(rho, e, &p, &dpdrho), densityGuess(p, e) (the start of the Newton
-/// inversion of invertPressure) and soundSpeed2At(rho, p, dpdrho) (c^2 from the evaluated p and
+/// inversion of invertPressure), maxDensity() (the end of its density range) and soundSpeed2At(rho, p, dpdrho) (c^2 from the evaluated p and
 /// its slope). density() returns the derivative at the root (1 / dp/drho, 0 where the slope is not
 /// positive).
 #include "ice/eos/eos.h"
@@ -24,7 +24,8 @@ class EvalEos : public Eos {
     for (std::size_t i = 0; i < n; ++i) {
       const double ei = e[i];
       const double r = invertPressure(p[i], self().densityGuess(p[i], ei),
-                                      [&](double x, double* pp, double* dd) { self().eval(x, ei, pp, dd); });
+                                      [&](double x, double* pp, double* dd) { self().eval(x, ei, pp, dd); },
+                                      self().maxDensity());
       double pp, dd;
       self().eval(r, ei, &pp, &dd);
       rho[i] = r;

@@ -1,5 +1,7 @@
 #pragma once
 /// @brief Ideal gas (scene name `ideal_gas`, parameter `gamma`): p = (gamma - 1) rho e, e = cv T.
+#include <limits>
+
 #include "ice/eos/eos.h"
 
 namespace mpmice::ice {
@@ -24,6 +26,10 @@ class IdealGas final : public Eos {
     (void)rho;
     const double k = g_ * (g_ - 1.0);
     for (std::size_t i = 0; i < n; ++i) c2[i] = k * e[i];
+  }
+  /// p > 0 (rho > 0) and e > 0 (T > 0): no admissible state at e <= 0.
+  void pressureFloor(std::size_t n, const double* e, double* pmin) const override {
+    for (std::size_t i = 0; i < n; ++i) pmin[i] = e[i] > 0 ? 0.0 : std::numeric_limits<double>::infinity();
   }
   [[nodiscard]] double internalEnergy(double rho, double p) const override { return p / ((g_ - 1.0) * rho); }
   [[nodiscard]] double gamma() const { return g_; }

@@ -1,14 +1,16 @@
 #pragma once
-/// @brief Safeguarded Newton inversion of an increasing pressure law p(rho) (header-only helper).
+/// @brief Safeguarded Newton inversion of an increasing pressure law p(rho) on (0, rhoMax)
+/// (header-only helper): Newton steps that leave the bracket become bisection, so the iterate
+/// never reaches a law's singular density (Mie-Gruneisen's eta = 1/s).
 #include <cmath>
 #include <limits>
 
 namespace mpmice::ice {
 
 template <class PDp>
-double invertPressure(double target, double guess, PDp&& pdp) {
-  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
-  double rho = guess > 0 ? guess : 1.0;
+double invertPressure(double target, double guess, PDp&& pdp, double rhoMax) {
+  double lo = 0.0, hi = rhoMax;
+  double rho = guess > 0 && guess < hi ? guess : (std::isfinite(hi) ? 0.5 * hi : 1.0);
   for (int it = 0; it < 200; ++it) {
     double p = 0, dp = 0;
     pdp(rho, &p, &dp);

@@ -4,6 +4,7 @@
 ///   p = A (1 - omega/(R1 V)) exp(-R1 V) + B (1 - omega/(R2 V)) exp(-R2 V) + omega rho e.
 /// Inverse by safeguarded Newton.
 #include <algorithm>
+#include <limits>
 
 #include "ice/eos/eval_eos.h"
 
@@ -17,6 +18,14 @@ class Jwl final : public EvalEos<Jwl> {
   [[nodiscard]] double densityGuess(double p, double e) const {
     const double guess = e > 0 ? std::max(p / (w_ * e), 1e-6 * rho0_) : rho0_;
     return std::min(guess, 2.0 * rho0_);
+  }
+  [[nodiscard]] double maxDensity() const { return std::numeric_limits<double>::infinity(); }
+  /// At e > 0, p -> 0+ as rho -> 0 (the exponentials vanish faster than omega rho e): the
+  /// admissible pressures are p > 0. At e <= 0 (below the law's energy reference, which a trace of
+  /// products in a mixed cell reaches) p(rho) dips below zero at small rho and has no simple lower
+  /// end: no floor there (-inf); the density inversion's bracket marks what it cannot reach.
+  void pressureFloor(std::size_t n, const double* e, double* pmin) const override {
+    for (std::size_t i = 0; i < n; ++i) pmin[i] = e[i] > 0 ? 0.0 : -std::numeric_limits<double>::infinity();
   }
   [[nodiscard]] double soundSpeed2At(double rho, double p, double dpdrho) const { return dpdrho + p * w_ / rho; }
   [[nodiscard]] double internalEnergy(double rho, double p) const override;

@@ -4,7 +4,10 @@
 /// `gruneisen` Gamma0, `reference_pressure` p0). With eta = 1 - rho0/rho:
 ///   p_H = p0 + rho0 c0^2 eta / (1 - s eta)^2 (eta >= 0; linear in eta for eta < 0),
 ///   e_H = (p_H + p0) eta / (2 rho0),   p = p_H + Gamma0 rho0 (e - e_H)   (Gamma rho = const).
-/// e = 0 at the reference state. Inverse by safeguarded Newton.
+/// e = 0 at the reference state. Inverse by safeguarded Newton on (0, rho0 s / (s - 1)); every
+/// pressure is admissible at fixed e (p -> -inf as rho -> 0: tension, no cavitation model).
+#include <limits>
+
 #include "ice/eos/eval_eos.h"
 
 namespace mpmice::ice {
@@ -19,6 +22,10 @@ class MieGruneisen final : public EvalEos<MieGruneisen> {
   [[nodiscard]] double densityGuess(double p, double /*e*/) const {
     const double guess = rho0_ * (1.0 + (p - p0_) / (rho0_ * c0_ * c0_));
     return guess > 0.1 * rho0_ ? guess : rho0_;
+  }
+  /// The Hugoniot's singular density (eta = 1/s: p -> inf), the end of the density range.
+  [[nodiscard]] double maxDensity() const {
+    return s_ > 1 ? rho0_ * s_ / (s_ - 1.0) : std::numeric_limits<double>::infinity();
   }
   [[nodiscard]] double soundSpeed2At(double rho, double p, double dpdrho) const {
     return dpdrho + p * g0_ * rho0_ / (rho * rho);

@@ -1,6 +1,7 @@
 // The one registry of ICE equations of state, keyed by the scene name (eos: type:).
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -27,6 +28,10 @@ double Eos::soundSpeed2(double rho, double e) const {
   double c2;
   soundSpeed2(1, &rho, &e, &c2);
   return c2;
+}
+void Eos::pressureFloor(std::size_t n, const double* e, double* pmin) const {
+  (void)e;
+  for (std::size_t i = 0; i < n; ++i) pmin[i] = -std::numeric_limits<double>::infinity();
 }
 double Eos::densityFromPT(double p, double T) const {
   double e = cv_ * T;

@@ -1,5 +1,9 @@
 // IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces, and the
-// face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density).
+// face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
+// plus the shock viscosity q = rho (q1 c |du| + q2 du^2) at faces in compression when asked
+// (ice.shock_viscosity). p_f enters the momentum and the energy flux form, so q's work is
+// returned as heat by the energy correction (fluids without external materials).
+#include <algorithm>
 #include <cmath>
 
 #include "ice/exchange/face_exchange.h"
@@ -59,7 +63,28 @@ void IceSolver::computeFaceVelocities() {
   }
 }
 
-void computeFacePressures(IceState& st, const core::Box& owned, int dim) {
+namespace {
+// q at the face between cell l and cell (i, j, k) in direction d; rL, rR: the cells' masses.
+double shockViscosity(const IceState& st, const int* l, int i, int j, int k, int d, double rL, double rR, double q1,
+                      double q2) {
+  double muL = 0, muR = 0, dL = 0, dR = 0, kL = 0, kR = 0;
+  for (const MaterialState& m : st.mat) {
+    muL += m.mass(l[0], l[1], l[2]) * m.vel(l[0], l[1], l[2], d);
+    muR += m.mass(i, j, k) * m.vel(i, j, k, d);
+    const double tL = m.theta(l[0], l[1], l[2]), tR = m.theta(i, j, k);
+    if (tL > 0) dL += tL / m.spvol(l[0], l[1], l[2]), kL += tL * m.kappa(l[0], l[1], l[2]);
+    if (tR > 0) dR += tR / m.spvol(i, j, k), kR += tR * m.kappa(i, j, k);
+  }
+  const double du = muR / rR - muL / rL;
+  if (!(du < 0) || !(dL > 0 && dR > 0 && kL > 0 && kR > 0)) return 0.0;
+  const double c = std::min(1.0 / std::sqrt(dL * kL), 1.0 / std::sqrt(dR * kR));
+  const double rho = 2.0 * dL * dR / (dL + dR);
+  return rho * (q1 * c * -du + q2 * du * du);
+}
+}  // namespace
+
+void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2) {
+  const bool q = q1 > 0 || q2 > 0;
   for (int d = 0; d < dim; ++d) {
     forEach(owned.faces(d), [&](int i, int j, int k) {
       int l[3] = {i, j, k};
@@ -70,11 +95,13 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim) {
         rR += m.mass(i, j, k);
       }
       const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
-      st.pressFace[d](i, j, k) = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
+      double pf = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
+      if (q && rL > 0 && rR > 0) pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
+      st.pressFace[d](i, j, k) = pf;
     });
   }
 }
 
-void IceSolver::computeFacePressure() { computeFacePressures(st_, owned_, mesh_.dim()); }
+void IceSolver::computeFacePressure() { computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_); }
 
 }  // namespace mpmice::ice

@@ -1,5 +1,6 @@
 #include "ice/pressure/equilibrium_pressure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -15,6 +16,13 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
   const std::size_t nm = eos_.size();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<EquilibriumFailure> failures;
+  // Records cell c (active slot a) as failed after `iterations`.
+  auto fail = [&](EquilibriumFailure::Kind kind, std::size_t a, std::int64_t c, double pc, double lo, double hi,
+                  double residual, int iterations) {
+    EquilibriumFailure fl{c, pc, lo, hi, residual, iterations, kind, floorMat_[a], floor_[a]};
+    failures.push_back(fl);
+    iters[c] = iterations;
+  };
   if (nm == 1) {  // one material fills the cell: theta = 1, p from the EOS directly
     for (const std::int64_t c : cells) {
       const double r = rho[0][c];
@@ -50,10 +58,41 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       }
     }
   }
+  // The admissible interval's lower end per active cell: the largest floor of the present materials.
   std::size_t na = active_.size();
-  lo_.assign(na, -inf);
+  floor_.assign(na, -inf);
+  floorMat_.assign(na, -1);
+  for (std::size_t r = 0; r < nm; ++r) {
+    ea_.resize(na);
+    pf_.resize(na);
+    for (std::size_t a = 0; a < na; ++a) ea_[a] = e[r][active_[a]];
+    eos_[r]->pressureFloor(na, ea_.data(), pf_.data());
+    for (std::size_t a = 0; a < na; ++a)
+      if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
+  }
+  {
+    std::size_t keep = 0;
+    for (std::size_t a = 0; a < na; ++a) {
+      const std::int64_t c = active_[a];
+      const double F = floor_[a];
+      if (!(F < inf)) {  // some material has no admissible state at its energy
+        fail(EquilibriumFailure::Kind::NoAdmissibleState, a, c, p[c], F, inf, inf, 0);
+        continue;
+      }
+      if (!(p[c] > F) || !std::isfinite(p[c]))  // start inside the interval
+        p[c] = std::isfinite(F) ? F + std::max(std::abs(F), 1.0) : (std::isfinite(p[c]) ? p[c] : 1.0);
+      active_[keep] = c;
+      floor_[keep] = F;
+      floorMat_[keep] = floorMat_[a];
+      ++keep;
+    }
+    na = keep;
+    active_.resize(na);
+  }
+  lo_.assign(floor_.begin(), floor_.begin() + static_cast<std::ptrdiff_t>(na));
   hi_.assign(na, inf);
-  // Per active slot the bracket is kept in lo_/hi_, indexed by slot (compacted along with active_).
+  // Per active slot the bracket is kept in lo_/hi_ (and the floor in floor_), indexed by slot
+  // (compacted along with active_). Every iterate lies strictly inside (lo, hi).
   for (int it = 0; na > 0; ++it) {
     pa_.resize(na);
     f_.assign(na, 1.0);
@@ -97,32 +136,45 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       }
       if (f < 0) lo = pc; else hi = pc;
       double next = (!bad_[a] && df_[a] > 0) ? pc - f / df_[a] : std::numeric_limits<double>::quiet_NaN();
+      const double F = floor_[a];
       if (!(next > lo && next < hi)) {
-        if (std::isfinite(lo) && std::isfinite(hi))  // bisect; geometrically across decades
-          next = lo > 0 && hi > 1e3 * lo ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
-        else if (std::isfinite(lo)) next = lo + 2.0 * std::abs(lo) + 1.0;
-        else next = hi - 2.0 * std::abs(hi) - 1.0;
+        if (std::isfinite(lo) && std::isfinite(hi)) {  // bisect; geometrically across decades above the floor
+          const double base = std::isfinite(F) ? F : 0.0, a0 = lo - base, b0 = hi - base;
+          next = a0 > 0 && b0 > 1e3 * a0 ? base + std::sqrt(a0 * b0) : 0.5 * (lo + hi);
+        } else if (std::isfinite(lo)) {
+          next = lo + 2.0 * std::max(std::abs(lo), 1.0);
+        } else {
+          next = hi - 2.0 * std::abs(hi) - 1.0;
+        }
       }
       const bool collapsed = std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 4e-16 * std::max(std::abs(hi), std::abs(lo));
+      const bool atFloor = std::isfinite(F) && lo == F;  // no iterate below the root seen yet
+      if (collapsed && atFloor) {  // f > 0 down to the floor: no admissible root
+        fail(EquilibriumFailure::Kind::NoRootAboveFloor, a, c, pc, lo, hi, f, it + 1);
+        continue;
+      }
       if (collapsed && !bad_[a]) {  // the root is resolved to round-off
         iters[c] = it;
         continue;
       }
       if (it + 1 >= maxIt_) {
-        failures.push_back({c, pc, lo, hi, bad_[a] ? inf : f, it + 1});
-        iters[c] = it + 1;
+        fail(EquilibriumFailure::Kind::NotConverged, a, c, pc, lo, hi, bad_[a] ? inf : f, it + 1);
         continue;
       }
       p[c] = next;
       active_[keep] = c;
       lo_[keep] = lo;
       hi_[keep] = hi;
+      floor_[keep] = F;
+      floorMat_[keep] = floorMat_[a];
       ++keep;
     }
     na = keep;
     active_.resize(na);
     lo_.resize(na);
     hi_.resize(na);
+    floor_.resize(na);
+    floorMat_.resize(na);
   }
   return failures;
 }

@@ -2,6 +2,7 @@
 // increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <stdexcept>
 
 #include "ice/ice_constants.h"
@@ -58,14 +59,36 @@ void IceSolver::computeEquilibriumPressure() {
       const int i = static_cast<int>(f.cell % nx) + sb.lo[0];
       const int j = static_cast<int>((f.cell / nx) % ny) + sb.lo[1];
       const int k = static_cast<int>(f.cell / (nx * ny)) + sb.lo[2];
-      os << "ice: the equilibrium pressure did not converge in cell (" << i << "," << j << "," << k << ") at t = "
-         << t_ << " after " << f.iterations << " iterations (" << failures.size()
-         << " cells failed on rank " << comm_.rank() << "); last p = " << f.p << ", bracket [" << f.lo << ", "
-         << f.hi << "], residual " << f.residual << "; materials:";
+      const std::string mat = f.material >= 0 ? "'" + st_.mat[f.material].name + "'" : std::string("?");
+      std::ostringstream w;
+      w << "in cell (" << i << "," << j << "," << k << ") at x = (";
+      const int ijk[3] = {i, j, k};
+      for (int d = 0; d < mesh_.dim(); ++d) w << (d ? ", " : "") << mesh_.cellCenter(d, ijk[d]);
+      w << ") m";
+      const std::string where = w.str();
+      switch (f.kind) {
+        case EquilibriumFailure::Kind::NoAdmissibleState:
+          os << "ice: no equilibrium pressure " << where << " at t = " << t_ << ": material " << mat
+             << " has no admissible state at its specific internal energy " << st_.mat[f.material].eint(i, j, k)
+             << " J/kg (" << st_.mat[f.material].eos->name() << " needs e > 0)";
+          break;
+        case EquilibriumFailure::Kind::NoRootAboveFloor:
+          os << "ice: no equilibrium pressure " << where << " at t = " << t_ << ": down to the lower end "
+             << f.floor << " Pa of material " << mat << "'s admissible pressures the materials fill only "
+             << 1.0 - f.residual << " of the cell (residual " << f.residual << ")";
+          break;
+        case EquilibriumFailure::Kind::NotConverged:
+          os << "ice: the equilibrium pressure did not converge " << where << " at t = " << t_ << " after "
+             << f.iterations << " iterations; last p = " << f.p << ", bracket [" << f.lo << ", " << f.hi
+             << "] (admissible above " << f.floor << " Pa, set by " << mat << "), residual " << f.residual;
+          break;
+      }
+      os << " (" << failures.size() << " cells failed on rank " << comm_.rank() << "); materials:";
       for (int r = 0; r < nm; ++r) {
         const MaterialState& m = st_.mat[r];
         os << "\n  " << m.name << " (" << m.eos->name() << "): mass " << m.mass(i, j, k) << " kg, density "
-           << m.mass(i, j, k) / V << ", e " << m.eint(i, j, k) << " J/kg, velocity " << m.vel(i, j, k, 0);
+           << m.mass(i, j, k) / V << " kg/m^3 of cell, e " << m.eint(i, j, k) << " J/kg, velocity "
+           << m.vel(i, j, k, 0) << " m/s";
       }
     }
     throw std::runtime_error(os.str());

@@ -76,6 +76,20 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     double s = 0;
     for (int d = 0; d < dim; ++d)
       s += (semiImplicit_ ? std::max(umax[d], kSemiImplicitSoundShare * cs) : umax[d] + cs) / mesh_.dx(d);
+    // The shock viscosity is an explicit diffusion with nu = (q1 c + q2 |du|) dx: stable for
+    // dt <= dx / (2 (q1 c + q2 |du|)); added to the rate, so the CFL factor covers it as well.
+    if (q1_ > 0 || q2_ > 0)
+      for (int d = 0; d < dim; ++d) {
+        const std::int64_t sd = d == 0 ? 1 : (d == 1 ? sb.length(0) : std::int64_t(sb.length(0)) * sb.length(1));
+        double du = 0;
+        for (int r = 0; r < nm; ++r) {
+          const MaterialState& m = st_.mat[r];
+          if (!(m.theta.data()[c] > kPresentFraction)) continue;
+          const double* u = m.vel.data(d);
+          du = std::max({du, std::abs(u[c + sd] - u[c]), std::abs(u[c] - u[c - sd])});
+        }
+        s += 2.0 * (q1_ * cs + q2_ * du) / mesh_.dx(d) * cfl_;
+      }
     if (s > rate) {
       rate = s;
       rateCell = c;

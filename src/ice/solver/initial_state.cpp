@@ -54,6 +54,8 @@ void IceSolver::initialize(const core::Scene& scene) {
     throw std::invalid_argument("ice.pressure_solver: unknown value '" + o.pressure_solver +
                                 "'; valid: explicit, semi_implicit");
   semiImplicit_ = o.pressure_solver == "semi_implicit";
+  q1_ = o.shock_viscosity_linear;
+  q2_ = o.shock_viscosity_quadratic;
   if (o.linear_solver == "cg") linearSolver_ = LinearSolver::Cg;
   else if (o.linear_solver == "bicgstab") linearSolver_ = LinearSolver::Bicgstab;
   else if (o.linear_solver == "pfmg_pcg") linearSolver_ = LinearSolver::PfmgPcg;

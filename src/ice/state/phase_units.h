@@ -18,6 +18,9 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
 void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
 /// Face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: the cells'
 /// mixture mass; the mean where both are empty; st.pressFace).
-void computeFacePressures(IceState& st, const core::Box& owned, int dim);
+/// Face pressures (density-weighted), plus the shock viscosity q = rho_f (q1 c_f |du| + q2 du^2) at
+/// faces in compression (du = u_R - u_L < 0 of the cells' mass-averaged velocities; rho_f the
+/// harmonic mean of the mixture densities, c_f the smaller mixture sound speed).
+void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0);
 
 }  // namespace mpmice::ice

@@ -87,6 +87,7 @@ ice:
   solver_max_iterations: 200
   pressure_iterations: 20
   pressure_tolerance: 1e-9
+  shock_viscosity: {linear: 1, quadratic: 2}
   exchange: {momentum: 1e12, heat: 1e3, pairs: [{materials: [steel, air], momentum: 1e15}, {materials: [water, air], heat: 10}]}
 coupling:
   schedule: implicit_serial
@@ -259,6 +260,8 @@ TEST(SceneParse, EverythingIsRead) {
   ASSERT_EQ(s.ice.exchange_pairs.size(), 2u);
   EXPECT_DOUBLE_EQ(s.ice.exchange_pairs[0].heat, 1e3);       // the section default
   EXPECT_DOUBLE_EQ(s.ice.exchange_pairs[1].momentum, 1e12);  // the section default
+  EXPECT_DOUBLE_EQ(s.ice.shock_viscosity_linear, 1.0);
+  EXPECT_DOUBLE_EQ(s.ice.shock_viscosity_quadratic, 2.0);
   EXPECT_EQ(s.coupling.mpm_ranks, 2);
   EXPECT_EQ(s.coupling.ice_ranks, 3);
   EXPECT_EQ(s.coupling.convergence.at(1).type, core::MeasureType::Absolute);

@@ -1,6 +1,7 @@
 #pragma once
 // Scenes of the ICE tests, built in C++ (the same shape a scene file gives).
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,14 @@
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::test {
+
+/// An EOS (or other model) spec: type and parameters.
+inline core::ModelSpec modelSpec(const std::string& type, std::map<std::string, double> params) {
+  core::ModelSpec s;
+  s.type = type;
+  s.params = std::move(params);
+  return s;
+}
 
 inline core::MaterialSpec idealGas(const std::string& name, double gamma = 1.4, double cv = 717.5) {
   core::MaterialSpec m;

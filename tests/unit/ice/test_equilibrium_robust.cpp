@@ -1,0 +1,205 @@
+// The equilibrium pressure at the extremes: stiffened-gas water against ideal-gas air at its real
+// density (1.2 kg/m^3) with volume fractions from 1e-10 to 1 - 1e-10, water in tension, Mie-Gruneisen
+// water compressed to 50 GPa, starting guesses far outside the admissible interval. Every pressure
+// the solver evaluates must be admissible for every EOS (recorded by a wrapping EOS), the root must
+// be the one built into the cell, and a cell without a root is a failure naming why and which
+// material (also through IceSolver: the message names the material, the cell and the time).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "../../verification/ice/ice_test_scenes.h"
+#include "ice/eos/eos.h"
+#include "ice/pressure/equilibrium_pressure.h"
+#include "test_comm.h"
+
+using namespace mpmice;
+
+namespace {
+constexpr auto& spec = test::modelSpec;
+
+// Forwards to an EOS and records the lowest pressure density() was asked about relative to the
+// inner EOS's floor at that e (must stay > 0: the solver never leaves the admissible interval).
+class RecordingEos final : public ice::Eos {
+ public:
+  explicit RecordingEos(std::unique_ptr<ice::Eos> inner) : Eos(inner->cv()), in_(std::move(inner)) {}
+  using Eos::density;
+  using Eos::pressure;
+  using Eos::soundSpeed2;
+  [[nodiscard]] const char* name() const override { return in_->name(); }
+  void pressure(std::size_t n, const double* rho, const double* e, double* p) const override {
+    in_->pressure(n, rho, e, p);
+  }
+  void density(std::size_t n, const double* p, const double* e, double* rho, double* drhodp) const override {
+    for (std::size_t i = 0; i < n; ++i) {
+      double f;
+      in_->pressureFloor(1, &e[i], &f);
+      minMargin = std::min(minMargin, p[i] - f);
+      if (!std::isfinite(p[i])) nonFinite = true;
+    }
+    in_->density(n, p, e, rho, drhodp);
+  }
+  void soundSpeed2(std::size_t n, const double* rho, const double* e, double* c2) const override {
+    in_->soundSpeed2(n, rho, e, c2);
+  }
+  void pressureFloor(std::size_t n, const double* e, double* pmin) const override { in_->pressureFloor(n, e, pmin); }
+  [[nodiscard]] double internalEnergy(double rho, double p) const override { return in_->internalEnergy(rho, p); }
+  mutable double minMargin = std::numeric_limits<double>::infinity();
+  mutable bool nonFinite = false;
+
+ private:
+  std::unique_ptr<ice::Eos> in_;
+};
+
+std::unique_ptr<RecordingEos> water() {
+  return std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 6e8}}), 4186));
+}
+std::unique_ptr<RecordingEos> air() {
+  return std::make_unique<RecordingEos>(ice::makeEos(spec("ideal_gas", {{"gamma", 1.4}}), 717.5));
+}
+std::unique_ptr<RecordingEos> mgWater() {
+  return std::make_unique<RecordingEos>(ice::makeEos(
+      spec("mie_gruneisen", {{"reference_density", 1000}, {"sound_speed", 1480}, {"slope", 1.75},
+                             {"gruneisen", 0.28}, {"reference_pressure", 1e5}}), 4186));
+}
+
+// Cells whose equilibrium is pStar: material r has energy e[r] and volume fraction theta[r] there
+// (m_r / V = theta_r rho_r(pStar, e_r)). Solves from each guess and checks the root, the
+// fractions and that every evaluated pressure was admissible.
+void expectRoot(const std::vector<RecordingEos*>& eos, const std::vector<double>& e, double pStar,
+                const std::vector<double>& thetas0, const std::vector<double>& guesses) {
+  const std::size_t nm = eos.size();
+  std::vector<const ice::Eos*> ce(eos.begin(), eos.end());
+  ice::EquilibriumPressure eq(ce, 1e-11, 100);
+  for (const double th0 : thetas0) {
+    const std::vector<double> theta = nm == 2 ? std::vector<double>{th0, 1 - th0}
+                                              : std::vector<double>{th0, 0.5 * (1 - th0), 0.5 * (1 - th0)};
+    std::vector<std::vector<double>> rho(nm), en(nm), micro(nm);
+    std::vector<const double*> rp, ep;
+    std::vector<double*> mp;
+    const std::size_t nc = guesses.size();
+    for (std::size_t r = 0; r < nm; ++r) {
+      rho[r].assign(nc, theta[r] * eos[r]->density(pStar, e[r]));
+      en[r].assign(nc, e[r]);
+      micro[r].assign(nc, 0.0);
+      rp.push_back(rho[r].data());
+      ep.push_back(en[r].data());
+      mp.push_back(micro[r].data());
+    }
+    std::vector<double> p = guesses, it(nc);
+    std::vector<std::int64_t> cells;
+    for (std::size_t c = 0; c < nc; ++c) cells.push_back(static_cast<std::int64_t>(c));
+    for (RecordingEos* x : eos) x->minMargin = std::numeric_limits<double>::infinity();
+    const auto fails = eq.solve(cells, rp, ep, p.data(), mp, it.data());
+    ASSERT_TRUE(fails.empty()) << "theta " << th0;
+    for (std::size_t c = 0; c < nc; ++c) {
+      EXPECT_NEAR(p[c], pStar, 1e-8 * std::max(std::abs(pStar), 1e5)) << "theta " << th0 << " guess " << guesses[c];
+      double sum = 0;
+      for (std::size_t r = 0; r < nm; ++r) sum += rho[r][c] / micro[r][c];
+      EXPECT_NEAR(sum, 1.0, 1e-10) << "theta " << th0;
+      EXPECT_LE(it[c], 100);
+    }
+    for (RecordingEos* x : eos) {
+      EXPECT_GT(x->minMargin, 0.0) << x->name() << ": a pressure at or below its floor was evaluated";
+      EXPECT_FALSE(x->nonFinite) << x->name();
+    }
+  }
+}
+
+const std::vector<double> kThetas = {1e-10, 1e-6, 0.5, 1 - 1e-6, 1 - 1e-10};
+// Guesses: the root's scale, far above, inside water's tension range, below every floor, NaN.
+const std::vector<double> kGuesses = {1e5, 1e12, -5.9e8, -1e10, std::numeric_limits<double>::quiet_NaN()};
+}  // namespace
+
+TEST(IceEquilibriumRobust, WaterAgainstAirAtRealDensityAndExtremeFractions) {
+  auto w = water(), a = air();
+  const double ew = w->internalEnergy(1000.0, 1e5), ea = a->internalEnergy(1.2, 1e5);
+  for (const double pStar : {1e5, 1e3, 1.419e7, 1e10})
+    expectRoot({w.get(), a.get()}, {ew, ea}, pStar, kThetas, kGuesses);
+}
+
+TEST(IceEquilibriumRobust, WaterHotAndColdAgainstAir) {
+  // Water at the energy of 1 GPa and 1000 kg/m^3 (a shocked state) against cold thin air.
+  auto w = water(), a = air();
+  const double ew = w->internalEnergy(1000.0, 1e9), ea = a->internalEnergy(0.01, 1e3);
+  for (const double pStar : {2e3, 3e8}) expectRoot({w.get(), a.get()}, {ew, ea}, pStar, kThetas, kGuesses);
+}
+
+TEST(IceEquilibriumRobust, StiffenedWaterInTensionAgainstStiffenedWater) {
+  // Two stiffened gases: the equilibrium may lie in tension, down to -p_inf of the stiffer floor.
+  auto w = water();
+  auto w2 = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 7.15}, {"p_inf", 3e8}}), 4186));
+  const double e1 = w->internalEnergy(1000.0, 1e5), e2 = w2->internalEnergy(1000.0, 1e5);
+  for (const double pStar : {-2.9e8, -1e7, 1e5, 5e9}) expectRoot({w.get(), w2.get()}, {e1, e2}, pStar, kThetas, kGuesses);
+}
+
+TEST(IceEquilibriumRobust, MieGruneisenWaterAgainstAirAndStiffenedGas) {
+  auto mg = mgWater(), a = air(), w = water();
+  const double em = 0.0, ea = a->internalEnergy(1.2, 1e5), ew = w->internalEnergy(1000.0, 1e5);
+  for (const double pStar : {1e5, 1e8, 5e10}) {
+    expectRoot({mg.get(), a.get()}, {em, ea}, pStar, kThetas, kGuesses);
+    expectRoot({mg.get(), a.get(), w.get()}, {em, ea, ew}, pStar, kThetas, kGuesses);
+  }
+  // Compressed towards the Hugoniot's singular density rho0 s / (s - 1): stays below it.
+  EXPECT_LT(mg->density(1e13, 0.0), 1000.0 * 1.75 / 0.75);
+  EXPECT_GT(mg->density(1e13, 0.0), 2000.0);
+  // Mie-Gruneisen against itself in tension (no floor): the root is found below zero.
+  auto mg2 = mgWater();
+  expectRoot({mg.get(), mg2.get()}, {em, 1e4}, -5e7, kThetas, {1e5, 1e12, -1e10});
+}
+
+TEST(IceEquilibriumRobust, NoAdmissibleStateNamesTheMaterial) {
+  auto w = water(), a = air();
+  ice::EquilibriumPressure eq({w.get(), a.get()}, 1e-11, 100);
+  std::vector<double> rw = {500.0}, ra = {0.6}, ew = {1e6}, ea = {-10.0}, p = {1e5}, mw(1), ma(1), it(1);
+  const auto fails = eq.solve({0}, {rw.data(), ra.data()}, {ew.data(), ea.data()}, p.data(), {mw.data(), ma.data()},
+                              it.data());
+  ASSERT_EQ(fails.size(), 1u);
+  EXPECT_EQ(fails[0].kind, ice::EquilibriumFailure::Kind::NoAdmissibleState);
+  EXPECT_EQ(fails[0].material, 1);
+}
+
+TEST(IceEquilibriumRobust, NoRootAboveTheFloorIsAFailureNotAClamp) {
+  // Two stiffened gases that fill only 0.8 of the cell even at the floor (p -> -3e8, the larger of
+  // the two -p_inf; their densities only grow above it): no admissible root.
+  auto w = water();
+  auto w2 = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 7.15}, {"p_inf", 3e8}}), 4186));
+  const double e1 = 1e6, e2 = 1e6;
+  const double F = -3e8;
+  std::vector<double> r1 = {0.5 * w->density(F, e1)}, r2 = {0.3 * w2->density(F * (1 - 1e-12), e2)};
+  std::vector<double> en1 = {e1}, en2 = {e2}, p = {1e5}, m1(1), m2(1), it(1);
+  ice::EquilibriumPressure eq({w.get(), w2.get()}, 1e-11, 200);
+  const auto fails = eq.solve({0}, {r1.data(), r2.data()}, {en1.data(), en2.data()}, p.data(), {m1.data(), m2.data()},
+                              it.data());
+  ASSERT_EQ(fails.size(), 1u);
+  EXPECT_EQ(fails[0].kind, ice::EquilibriumFailure::Kind::NoRootAboveFloor);
+  EXPECT_EQ(fails[0].material, 1);
+  EXPECT_DOUBLE_EQ(fails[0].floor, F);
+  EXPECT_GT(w->minMargin, 0.0);
+  EXPECT_GT(w2->minMargin, 0.0);
+}
+
+TEST(IceEquilibriumRobust, SolverMessageNamesMaterialCellAndTime) {
+  core::Scene s;
+  s.name = "water_air";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Outflow;
+  s.time.end = 1.0;
+  s.materials = {test::stiffenedGas("water", 4.4, 6e8), test::idealGas("air")};
+  s.geometry = {test::region("mix", test::box({0, 0, 0}, {1, 1, 1}), {{"water", 0.5}, {"air", 0.5}}, 1e5, 500)};
+  ice::IceSolver sol(s, test::comm());
+  sol.state().mat[1].eint(4, 0, 0) = -1.0;  // air with no admissible state in cell 4
+  try {
+    sol.computeEquilibriumPressure();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    for (const std::string part : {"no equilibrium pressure", "cell (4,0,0)", "x = (0.45) m", "t = 0", "'air'",
+                                   "no admissible state", "-1 J/kg"})
+      EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
+  }
+}
