@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       }
       return coupler::runSolidParticipant(participant, scene, std::cout);
     }
-    return mpm::runStandalone(scene, participant.local(), std::cout);  // 2.
+    return mpm::runStandalone(scene, participant.local(), std::cout, line.restart);  // 2.
   } catch (const core::SceneError& ex) {
     if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
     return 1;
