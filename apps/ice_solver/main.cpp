@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     coupled = participant.coupled();
     localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "ice_solver");
-    if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
+    if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout, line.restart);
     return ice::runStandalone(scene, participant.local(), std::cout, line.restart);  // 2.
   } catch (const core::SceneError& e) {
     if (session.world().root()) std::cerr << e.what() << "\n";

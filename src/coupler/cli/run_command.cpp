@@ -46,10 +46,14 @@ std::string LaunchPlan::describeWorldRank(int worldRank) const {
 }
 
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase) {
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase,
+                         const std::string& restart) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
   LaunchPlan plan;
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
+    if (!restart.empty())
+      throw std::invalid_argument("coupler run: --restart is not available for coupling.fluid: openfoam yet "
+                                  "(mpm_solver + ice_solver scenes only)");
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
     const std::string solver = scene.coupling.interface.openfoam_solver;
     const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
@@ -76,7 +80,9 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
     if (p) plan.argv.emplace_back(":");
     const fs::path exe = fs::path(binDir) / plan.programs[p] / plan.programs[p];
     plan.executables.push_back(exe.string());
-    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe.string(), sceneFile});
+    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe.string()});
+    if (!restart.empty()) plan.argv.insert(plan.argv.end(), {"--restart", restart});
+    plan.argv.push_back(sceneFile);
   }
   return plan;
 }
@@ -208,7 +214,7 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err) {
 namespace {
 
 struct RunOptions {
-  std::string sceneFile, binDir;
+  std::string sceneFile, binDir, restart;
   int mpmRanks = 0, iceRanks = 0;  // 0: the scene's coupling.ranks
   bool dryRun = false;
 };
@@ -244,11 +250,17 @@ void describeRun(CLI::App& app, RunOptions& o) {
                  "(default: the one of this coupler)")
       ->type_name("DIR");
   app.add_flag("--dry-run", o.dryRun, "print the launch line without running it");
+  app.add_option("--restart", o.restart,
+                 "resume from a checkpoint (output.checkpoint_interval): an output directory (the latest "
+                 "checkpoint there) or one program's checkpoint file; passed to both programs, each "
+                 "resumes from its own file of that step")
+      ->type_name("PATH");
   app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
   app.footer("Sample runs:\n"
              "  coupler run configs/pressurized_cylinder.yaml\n"
              "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
-             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n");
+             "  coupler run --bin-dir build configs/flap_openfoam.yaml\n"
+             "  coupler run --restart output configs/pressurized_cylinder.yaml\n");
 }
 
 }  // namespace
@@ -267,7 +279,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     CLI::App app("", "coupler run");
     describeRun(app, o);
     if (const auto done = parseSubcommand(app, args, "coupler run",
-                                          "coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>",
+                                          "coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] [--restart PATH] <scene.yaml>",
                                           out, err))
       return *done;
   }
@@ -291,7 +303,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
     std::string fluidCase;
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
-    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase);
+    const LaunchPlan plan = composeLaunch(scene, sceneFile, binDir, MPMICE_MPIRUN_PATH, mpmRanks, iceRanks, fluidCase, o.restart);
     for (const auto& exe : plan.executables)
       if (!fs::exists(exe))
         throw std::invalid_argument("coupler run: " + exe + " does not exist; build it, or point --bin-dir at the build directory");

@@ -38,7 +38,8 @@ struct LaunchPlan {
 /// The launch for `sceneFile` with binaries under binDir (<binDir>/mpm_solver/mpm_solver, ...).
 /// coupling.fluid openfoam: mpm_solver and the scene's OpenFOAM solver (serial) in `fluidCase`.
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "");
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "",
+                         const std::string& restart = "");
 
 /// The usage text of `coupler run` (`coupler run --help`).
 std::string runUsage();

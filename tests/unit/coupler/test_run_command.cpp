@@ -62,6 +62,15 @@ TEST(CoupleRun, ComposesMpmdLineFromSceneRanks) {
   EXPECT_EQ(plan.describeWorldRank(5), "");
 }
 
+TEST(CoupleRun, RestartPassesThePathToBothPrograms) {
+  const auto s = tinyScene();
+  const auto plan = coupler::composeLaunch(s, "tiny.yaml", "/b", "/x/mpirun", 2, 3, "", "out dir");
+  EXPECT_EQ(plan.commandLine(), "/x/mpirun -np 2 /b/mpm_solver/mpm_solver --restart 'out dir' tiny.yaml : -np 3 "
+                                "/b/ice_solver/ice_solver --restart 'out dir' tiny.yaml");
+  EXPECT_EQ(plan.argv.at(4), "--restart");
+  EXPECT_EQ(plan.argv.at(5), "out dir");  // one argument, no shell
+}
+
 TEST(CoupleRun, ExplainsFailedRanksFromMpirunText) {
   const auto s = tinyScene();
   const auto plan = coupler::composeLaunch(s, "tiny.yaml", "/b", "mpirun", 1, 2);
