@@ -45,15 +45,22 @@ std::string LaunchPlan::describeWorldRank(int worldRank) const {
   return {};
 }
 
+namespace {
+/// --restart exists for mpm_solver + ice_solver only (throws for the surface coupling).
+void checkRestartSupported(const core::Scene& scene, const std::string& restart) {
+  if (!restart.empty() && scene.coupling.fluid == core::FluidSolver::OpenFoam)
+    throw std::invalid_argument("coupler run: --restart is not available for coupling.fluid: openfoam yet "
+                                "(mpm_solver + ice_solver scenes only)");
+}
+}  // namespace
+
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                          const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase,
                          const std::string& restart) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
+  checkRestartSupported(scene, restart);
   LaunchPlan plan;
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
-    if (!restart.empty())
-      throw std::invalid_argument("coupler run: --restart is not available for coupling.fluid: openfoam yet "
-                                  "(mpm_solver + ice_solver scenes only)");
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
     const std::string solver = scene.coupling.interface.openfoam_solver;
     const std::string mpm = (fs::path(binDir) / "mpm_solver" / "mpm_solver").string();
@@ -291,6 +298,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
+    checkRestartSupported(scene, o.restart);  // before the lock and the OpenFOAM case
     // The output-directory lock, before anything is written (core/io/run_lock.h); the launch's
     // programs accept it as their coupler's.
     std::unique_ptr<core::RunLock> lock;

@@ -8,7 +8,7 @@ work=$1 mpirun=$2 program=$3 scene=$4 base=$5 change=$6
 rm -rf "$work" && mkdir -p "$work/empty" && cd "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 "$mpirun" -np 1 "$program" "$scene" > run.log 2>&1 || { cat run.log; fail "the run failed"; }
-ck=$(ls out/"${base}"_checkpoint_*.h5 | head -1)
+ck=$(ls */"${base}"_checkpoint_*.h5 | head -1)  # the scene's output directory
 [ -n "$ck" ] || fail "no checkpoint written"
 # expect PATTERN... -- COMMAND...: non-zero exit, every pattern in the output.
 expect() {
@@ -27,5 +27,5 @@ sed -e "$change" "$scene" > other.yaml
 cmp -s other.yaml "$scene" && fail "the test could not change the scene with '$change'"
 expect "the checkpoint is of another scene" "$ck" -- "$mpirun" -np 1 "$program" --restart "$ck" other.yaml
 expect "holds no checkpoint" "empty" -- "$mpirun" -np 1 "$program" --restart empty "$scene"
-expect "no checkpoint file" -- "$mpirun" -np 1 "$program" --restart "out/${base}_checkpoint_999999.h5" "$scene"
+expect "no checkpoint file" -- "$mpirun" -np 1 "$program" --restart "$(dirname "$ck")/${base}_checkpoint_999999.h5" "$scene"
 echo "PASS"

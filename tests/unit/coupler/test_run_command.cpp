@@ -115,6 +115,17 @@ TEST(CoupleRun, ComposesTheOpenFoamLaunchWithASerialFluid) {
   ASSERT_EQ(plan.executables.size(), 1u);
 }
 
+TEST(CoupleRun, RestartIsRefusedForTheOpenFoamCoupling) {
+  const auto s = flapScene("fluid");
+  try {
+    (void)coupler::composeLaunch(s, "flap.yaml", "/b", "/x/mpirun", 2, 1, "/o/fluid", "output");
+    ADD_FAILURE() << "--restart with OpenFOAM must be refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--restart is not available for coupling.fluid: openfoam"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(CoupleRun, AddsTheAdapterInsideTheFunctionsDictionary) {
   const std::string entry = coupler::adapterEntry("/b/lib.so", "/s/flap.yaml");
   EXPECT_NE(entry.find("type    mpmiceAdapter;"), std::string::npos);
