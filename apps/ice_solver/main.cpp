@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
     localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "ice_solver");
     logFile = core::LogFile::teeProgramOutput(participant.local(), scene, "ice_solver");  // after the lock
-    if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout);
-    return ice::runStandalone(scene, participant.local(), std::cout);  // 2.
+    if (participant.coupled()) return coupler::runFluidParticipant(participant, scene, std::cout, line.restart);
+    return ice::runStandalone(scene, participant.local(), std::cout, line.restart);  // 2.
   } catch (const core::SceneError& e) {
     if (session.world().root()) std::cerr << e.what() << "\n";
     return 1;

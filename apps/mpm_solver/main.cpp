@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "coupler/launch/output_lock.h"
@@ -57,6 +58,9 @@ int main(int argc, char** argv) {
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {
+          if (!line.restart.empty())
+            throw std::invalid_argument("--restart: the surface coupling with OpenFOAM (coupling.fluid: openfoam) "
+                                        "does not resume from checkpoints yet");
           return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
         } catch (const core::HealthError& ex) {  // only this side knows: end the launch
           if (ex.reporter()) core::writeErrorLine("mpm_solver", ex.what());
@@ -68,9 +72,9 @@ int main(int argc, char** argv) {
           core::MpiSession::abortAll(1);
         }
       }
-      return coupler::runSolidParticipant(participant, scene, std::cout);
+      return coupler::runSolidParticipant(participant, scene, std::cout, line.restart);
     }
-    return mpm::runStandalone(scene, participant.local(), std::cout);  // 2.
+    return mpm::runStandalone(scene, participant.local(), std::cout, line.restart);  // 2.
   } catch (const core::SceneError& ex) {
     if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
     return 1;

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     const core::Scene scene = core::loadScene(line.scene);  // 1.
     const auto lock = core::lockOutputDirectory(comm, scene, "mpmice", &std::cerr);  // every rank learns a refusal
     logFile = core::LogFile::teeProgramOutput(comm, scene, "mpmice");  // after the lock
-    return coupler::runMonolithic(scene, comm, std::cout);  // 2.
+    return coupler::runMonolithic(scene, comm, std::cout, line.restart);  // 2.
   } catch (const core::SceneError& e) {
     if (comm.root()) std::cerr << e.what() << "\n";
     return 2;

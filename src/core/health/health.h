@@ -52,6 +52,8 @@ class StepCollapse {
   /// set the step: the cell or particle and the bound).
   [[nodiscard]] std::string message(double stable, double t, long step, const std::string& limit) const;
   [[nodiscard]] double first() const { return first_; }
+  /// A restart: the reference step recorded before the checkpoint (first()).
+  void resumeFirst(double first) { first_ = first; }
 
  private:
   double fraction_;

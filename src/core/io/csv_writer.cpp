@@ -28,6 +28,27 @@ CsvWriter::CsvWriter(const Comm& comm, const std::string& path, std::vector<std:
   if (!continuing) writeHeader();
 }
 
+void CsvWriter::cutForResume(const Comm& comm, const std::string& path, std::int64_t length, int writerRank) {
+  std::string err;
+  if (comm.rank() == writerRank) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec || static_cast<std::int64_t>(size) < length || length <= 0)
+      err = "--restart: the CSV file '" + path + "' " +
+            (ec ? std::string("is missing") : "has " + std::to_string(size) + " bytes") + ", the checkpoint needs its first " +
+            std::to_string(length);
+    else
+      std::filesystem::resize_file(path, static_cast<std::uintmax_t>(length));
+  }
+  err = comm.firstMessage(err);
+  if (!err.empty()) throw std::invalid_argument(err);
+}
+
+std::int64_t CsvWriter::length() const {
+  if (!out_ || path_.empty()) return 0;
+  return static_cast<std::int64_t>(std::filesystem::file_size(path_));
+}
+
 CsvWriter::CsvWriter(std::ostream& os, std::vector<std::string> columns, bool active, int precision)
     : columns_(std::move(columns)), precision_(precision) {
   if (columns_.empty()) throw std::invalid_argument("CsvWriter: needs at least one column");

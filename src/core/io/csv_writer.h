@@ -7,6 +7,7 @@
 /// file; on every other rank the writer is inactive and row() only checks the column count. Append
 /// mode continues an existing file (a restart) without repeating the header. Writing to a given
 /// std::ostream (stdout, a test's string stream) works the same way.
+#include <cstdint>
 #include <fstream>
 #include <initializer_list>
 #include <ostream>
@@ -24,6 +25,11 @@ class CsvWriter {
   /// Writes `path` on rank `writerRank` of comm only.
   CsvWriter(const Comm& comm, const std::string& path, std::vector<std::string> columns, int writerRank = 0,
             Mode mode = Mode::Truncate, int precision = 12);
+  /// A restart, before opening `path` in Append mode: cuts the file to its first `length` bytes
+  /// (what length() gave at the checkpoint; rows written after it are dropped, so the series has
+  /// no duplicated or lost row). On writerRank; throws std::invalid_argument on every rank, naming
+  /// the file, when it is missing or shorter than that. Collective.
+  static void cutForResume(const Comm& comm, const std::string& path, std::int64_t length, int writerRank = 0);
   /// Writes to `os` (which must outlive the writer) when `active`.
   CsvWriter(std::ostream& os, std::vector<std::string> columns, bool active = true, int precision = 12);
 
@@ -34,6 +40,8 @@ class CsvWriter {
   [[nodiscard]] const std::vector<std::string>& columns() const { return columns_; }
   [[nodiscard]] bool active() const { return out_ != nullptr; }
   [[nodiscard]] const std::string& path() const { return path_; }
+  /// Bytes written to the file so far (every row flushed); 0 where the writer is inactive.
+  [[nodiscard]] std::int64_t length() const;
 
  private:
   void writeHeader();

@@ -169,7 +169,12 @@ std::string OutputWriter::writeStep(int step, double time, const std::vector<con
 
   // 3. The XDMF index over every step so far (rank 0 writes; all ranks keep the record).
   xdmf_.add(std::move(rec));
-  err.clear();
+  writeIndex();
+  return path;
+}
+
+void OutputWriter::writeIndex() const {
+  std::string err;
   if (comm_.root()) {
     try {
       xdmf_.write(xdmfPath());
@@ -178,7 +183,11 @@ std::string OutputWriter::writeStep(int step, double time, const std::vector<con
     }
   }
   agree(comm_, err);
-  return path;
+}
+
+void OutputWriter::resumeIndex(const std::string& serialized) {
+  xdmf_.restore(serialized);
+  writeIndex();
 }
 
 void OutputWriter::writeGridField(const H5Group& group, const Field& f) const {

@@ -44,9 +44,13 @@ class OutputWriter {
   /// `<dir>/<base>.xmf`
   [[nodiscard]] std::string xdmfPath() const;
   [[nodiscard]] const XdmfWriter& index() const { return xdmf_; }
+  /// A restart: continues the index of the steps written before the checkpoint (the text
+  /// XdmfWriter::serialize() gave then) and rewrites `<base>.xmf` over them (rank 0). Collective.
+  void resumeIndex(const std::string& serialized);
 
  private:
   void writeGridField(const H5Group& group, const Field& f) const;
+  void writeIndex() const;  // rank 0 rewrites <base>.xmf (collective: every rank learns a failure)
   void writeParticles(const H5Group& root, const ParticleOutput& p) const;
 
   Comm comm_;

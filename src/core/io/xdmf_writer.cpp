@@ -156,4 +156,58 @@ void XdmfWriter::write(const std::string& path) const {
   if (ec) throw std::runtime_error("XDMF: cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
 }
 
+// One line per step, fields separated by tabs: step, time (hexadecimal, exact), file, particle
+// count, the grid arrays (count, then name, centering 0 cell / 1 node, components each), the
+// particle arrays (count, then name, components each).
+std::string XdmfWriter::serialize() const {
+  std::ostringstream o;
+  char t[64];
+  for (const XdmfStep& s : steps_) {
+    std::snprintf(t, sizeof t, "%a", s.time);
+    o << s.step << '\t' << t << '\t' << s.h5file << '\t' << s.numParticles << '\t' << s.grid.size();
+    for (const auto& g : s.grid) o << '\t' << g.name << '\t' << (g.centering == Centering::Node ? 1 : 0) << '\t' << g.ncomp;
+    o << '\t' << s.particles.size();
+    for (const auto& p : s.particles) o << '\t' << p.name << '\t' << p.ncomp;
+    o << '\n';
+  }
+  return o.str();
+}
+
+void XdmfWriter::restore(const std::string& text) {
+  std::vector<XdmfStep> steps;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::size_t a = 0;
+    for (std::size_t b; (b = line.find('\t', a)) != std::string::npos; a = b + 1) f.push_back(line.substr(a, b - a));
+    f.push_back(line.substr(a));
+    std::size_t k = 0;
+    auto next = [&]() -> const std::string& {
+      if (k >= f.size()) throw std::invalid_argument("XdmfWriter::restore: a truncated index line '" + line + "'");
+      return f[k++];
+    };
+    XdmfStep s;
+    s.step = std::stoi(next());
+    s.time = std::strtod(next().c_str(), nullptr);
+    s.h5file = next();
+    s.numParticles = std::stoll(next());
+    for (int n = std::stoi(next()); n > 0; --n) {
+      XdmfStep::GridArray g;
+      g.name = next();
+      g.centering = next() == "1" ? Centering::Node : Centering::Cell;
+      g.ncomp = std::stoi(next());
+      s.grid.push_back(g);
+    }
+    for (int n = std::stoi(next()); n > 0; --n) {
+      XdmfStep::ParticleArray p;
+      p.name = next();
+      p.ncomp = std::stoi(next());
+      s.particles.push_back(p);
+    }
+    steps.push_back(std::move(s));
+  }
+  steps_ = std::move(steps);
+}
+
 }  // namespace mpmice::core

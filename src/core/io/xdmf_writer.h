@@ -45,6 +45,10 @@ class XdmfWriter {
   /// Appends a step; steps numbered at or after it are dropped first (a restart rewrites them).
   void add(XdmfStep s);
   [[nodiscard]] const std::vector<XdmfStep>& steps() const { return steps_; }
+  /// The steps as text (one line each, exact times), for a checkpoint; restore() reads it back
+  /// and replaces the steps (a restart continues the index it had).
+  [[nodiscard]] std::string serialize() const;
+  void restore(const std::string& text);
   [[nodiscard]] std::string text() const;
   void write(const std::string& path) const;
 

@@ -249,6 +249,7 @@ struct ProbeSpec {
 struct OutputSpec {
   std::string directory = "output";
   double interval = 0;                  // 0 = only the last step
+  double checkpoint_interval = 0;       // [s] simulated; 0 = no checkpoints
   std::vector<std::string> fields;      // empty = every field the solver offers
   bool particles = true;
   bool enabled = true;

@@ -285,7 +285,8 @@ void options(std::ostream& o, const Scene& s) {
       << ", preconditioner: " << (a.preconditioner ? "residual_sum" : "none");
   o << "}\n";
   const OutputSpec& out = s.output;
-  o << "output:\n  directory: " << quote(out.directory) << "\n  interval: " << num(out.interval) << "\n  fields: [";
+  o << "output:\n  directory: " << quote(out.directory) << "\n  interval: " << num(out.interval)
+    << "\n  checkpoint_interval: " << num(out.checkpoint_interval) << "\n  fields: [";
   for (std::size_t k = 0; k < out.fields.size(); ++k) o << (k ? ", " : "") << quote(out.fields[k]);
   o << "]\n  particles: " << flag(out.particles) << "\n  enabled: " << flag(out.enabled) << "\n";
   if (!out.probes.empty()) {

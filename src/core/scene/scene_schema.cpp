@@ -637,10 +637,11 @@ class SchemaReader {
 
   void readOutput(const YamlValue& v) {
     const YamlMap m = v.map();
-    m.allow({"directory", "interval", "fields", "particles", "enabled", "probes"});
+    m.allow({"directory", "interval", "checkpoint_interval", "fields", "particles", "enabled", "probes"});
     OutputSpec& o = s_.output;
     o.directory = m.string("directory", o.directory);
     o.interval = m.number("interval", o.interval, Range::nonNegative());  // [s], 0 = last step only
+    o.checkpoint_interval = m.number("checkpoint_interval", o.checkpoint_interval, Range::nonNegative());  // [s], 0 = none
     if (const auto f = m.get("fields"))
       for (const auto& item : f->list()) o.fields.push_back(item.string());
     o.particles = m.boolean("particles", o.particles);

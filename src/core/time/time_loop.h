@@ -12,6 +12,8 @@
 /// next multiple of output.interval (at most once per step, so an interval smaller than the
 /// step writes every step), and after the last step of the run. output.interval 0: the start
 /// and the last step only. Pinned by tests/unit/core/test_time_loop.cpp.
+#include <vector>
+
 namespace mpmice::core {
 
 inline constexpr double kTimeTolerance = 1e-12;
@@ -42,6 +44,13 @@ class OutputSchedule {
   }
   /// True when the step at time t was the last one written (so the end needs no extra write).
   [[nodiscard]] bool written(double t) const { return written_ == t; }
+  /// Where the schedule stands (next output time, last time written), for a checkpoint;
+  /// resume() returns to it.
+  [[nodiscard]] std::vector<double> position() const { return {next_, written_}; }
+  void resume(const std::vector<double>& p) {
+    next_ = p.at(0);
+    written_ = p.at(1);
+  }
 
  private:
   double every_;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/checkpoint.h"
 #include "core/parallel/comm.h"
 
 namespace mpmice::coupler {
@@ -44,6 +45,10 @@ class Acceleration {
   /// The step's iterations converged: the next call starts a new step.
   virtual void iterationsConverged() = 0;
   [[nodiscard]] virtual const char* name() const = 0;
+  /// What it has learned (IQN-ILS: the columns, their QR, the weights; Aitken: the relaxation)
+  /// under `prefix`, for a checkpoint between steps; load() returns a fresh one to it. Local.
+  virtual void save(core::CheckpointData& /*data*/, const std::string& /*prefix*/) const {}
+  virtual void load(const core::CheckpointData& /*data*/, const std::string& /*prefix*/) {}
 };
 
 /// Creates an acceleration by its scene name; an unknown name throws, listing the valid names.

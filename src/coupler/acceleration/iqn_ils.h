@@ -30,6 +30,8 @@ class IqnIls final : public Acceleration {
   void iterationsConverged() override;
   void setSegments(const std::vector<Segment>& segments) override;
   const char* name() const override { return "iqn_ils"; }
+  void save(core::CheckpointData& data, const std::string& prefix) const override;  // acceleration_checkpoint.cpp
+  void load(const core::CheckpointData& data, const std::string& prefix) override;
   /// Columns used in the last least-squares solve (after filtering).
   [[nodiscard]] int columnsUsed() const { return used_; }
   /// Times the QR was rebuilt (preconditioner weights renewed with columns in use).

@@ -29,6 +29,11 @@ class QrFactorization {
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   [[nodiscard]] const Eigen::MatrixXd& r() const { return r_; }
   [[nodiscard]] const std::vector<Eigen::VectorXd>& q() const { return q_; }
+  /// A restart: the factorisation as q() and r() were (exactly, not rebuilt).
+  void restore(std::vector<Eigen::VectorXd> q, Eigen::MatrixXd r) {
+    q_ = std::move(q);
+    r_ = std::move(r);
+  }
 
  private:
   /// Rotates rows (i, k) of R (columns from `from`) and columns (i, k) of Q by (c, s).

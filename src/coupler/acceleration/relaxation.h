@@ -25,6 +25,8 @@ class AitkenRelaxation final : public Acceleration {
   Eigen::VectorXd performAcceleration(const Eigen::VectorXd& x, const Eigen::VectorXd& xt) override;
   void iterationsConverged() override { first_ = true; }
   const char* name() const override { return "aitken"; }
+  void save(core::CheckpointData& data, const std::string& prefix) const override;  // acceleration_checkpoint.cpp
+  void load(const core::CheckpointData& data, const std::string& prefix) override;
   [[nodiscard]] double relaxation() const { return w_; }
 
  private:

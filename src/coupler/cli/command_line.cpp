@@ -38,7 +38,7 @@ std::string usage() {
          "commands:\n"
          "  check [--quiet] <scene.yaml>   validate a scene; print it as understood (defaults filled in)\n"
          "                                 and a one-line summary; exit 0 if valid, 2 if not\n"
-         "  run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>\n"
+         "  run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] [--restart PATH] <scene.yaml>\n"
          "                                 compose, print and run the MPMD launch of mpm_solver and\n"
          "                                 ice_solver on the scene (ranks from coupling.ranks; the\n"
          "                                 programs beside this coupler, in its build tree or on PATH,\n"

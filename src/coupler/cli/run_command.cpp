@@ -43,9 +43,20 @@ std::string LaunchPlan::describeWorldRank(int worldRank) const {
   return {};
 }
 
+namespace {
+/// --restart exists for mpm_solver + ice_solver only (throws for the surface coupling).
+void checkRestartSupported(const core::Scene& scene, const std::string& restart) {
+  if (!restart.empty() && scene.coupling.fluid == core::FluidSolver::OpenFoam)
+    throw std::invalid_argument("coupler run: --restart is not available for coupling.fluid: openfoam yet "
+                                "(mpm_solver + ice_solver scenes only)");
+}
+}  // namespace
+
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase) {
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase,
+                         const std::string& restart) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
+  checkRestartSupported(scene, restart);
   LaunchPlan plan;
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
@@ -74,7 +85,9 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
     if (p) plan.argv.emplace_back(":");
     const std::string exe = locateProgram(plan.programs[p], binDir, ownDirectory());
     plan.executables.push_back(exe);
-    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe, sceneFile});
+    plan.argv.insert(plan.argv.end(), {"-np", std::to_string(plan.ranks[p]), exe});
+    if (!restart.empty()) plan.argv.insert(plan.argv.end(), {"--restart", restart});
+    plan.argv.push_back(sceneFile);
   }
   return plan;
 }
@@ -199,7 +212,7 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std:
 namespace {
 
 struct RunOptions {
-  std::string sceneFile, binDir;
+  std::string sceneFile, binDir, restart;
   int mpmRanks = 0, iceRanks = 0;  // 0: the scene's coupling.ranks
   bool dryRun = false;
 };
@@ -239,12 +252,18 @@ void describeRun(CLI::App& app, RunOptions& o) {
                  "build tree, then PATH)")
       ->type_name("DIR");
   app.add_flag("--dry-run", o.dryRun, "print the launch line without running it");
+  app.add_option("--restart", o.restart,
+                 "resume from a checkpoint (output.checkpoint_interval): an output directory (the latest "
+                 "checkpoint there) or one program's checkpoint file; passed to both programs, each "
+                 "resumes from its own file of that step")
+      ->type_name("PATH");
   app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
   app.footer("Sample runs:\n"
              "  coupler run configs/pressurized_cylinder.yaml\n"
              "  coupler run --mpm-ranks 2 --ice-ranks 2 --dry-run configs/pressurized_cylinder.yaml\n"
              "  coupler run --bin-dir build configs/flap_openfoam.yaml\n"
-             "  coupler run --bin-dir /opt/mpmice/bin configs/pressurized_cylinder.yaml\n");
+             "  coupler run --bin-dir /opt/mpmice/bin configs/pressurized_cylinder.yaml\n"
+             "  coupler run --restart output configs/pressurized_cylinder.yaml\n");
 }
 
 }  // namespace
@@ -262,7 +281,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     CLI::App app("", "coupler run");
     describeRun(app, o);
     if (const auto done = parseSubcommand(app, args, "coupler run",
-                                          "coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] <scene.yaml>",
+                                          "coupler run [--mpm-ranks N] [--ice-ranks N] [--bin-dir DIR] [--dry-run] [--restart PATH] <scene.yaml>",
                                           out, err))
       return *done;
   }
@@ -274,6 +293,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
+    checkRestartSupported(scene, o.restart);  // before the lock and the OpenFOAM case
     // The output-directory lock, before anything is written (core/io/run_lock.h); the launch's
     // programs accept it as their coupler's.
     std::unique_ptr<core::RunLock> lock;
@@ -287,7 +307,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     std::string fluidCase;
     if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
     const LaunchPlan plan =
-        composeLaunch(scene, sceneFile, binDir, locateLaunchHelper(ownDirectory()), mpmRanks, iceRanks, fluidCase);
+        composeLaunch(scene, sceneFile, binDir, locateLaunchHelper(ownDirectory()), mpmRanks, iceRanks, fluidCase, o.restart);
     for (std::size_t p = 0; p < plan.executables.size(); ++p)
       if (!fs::exists(plan.executables[p]))
         throw std::invalid_argument(

@@ -40,7 +40,8 @@ struct LaunchPlan {
 /// coupler, its build tree, then PATH; cli/program_locator.h).
 /// coupling.fluid openfoam: mpm_solver and the scene's OpenFOAM solver (serial) in `fluidCase`.
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
-                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "");
+                         const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase = "",
+                         const std::string& restart = "");
 
 /// The usage text of `coupler run` (`coupler run --help`).
 std::string runUsage();

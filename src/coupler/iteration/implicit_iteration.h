@@ -75,6 +75,14 @@ class ImplicitIteration {
 
   [[nodiscard]] std::vector<std::string> measuredFields() const;
 
+  /// What the acceleration has learned, for a checkpoint between steps (Acceleration::save).
+  void save(core::CheckpointData& data, const std::string& prefix) const {
+    if (acceleration_) acceleration_->save(data, prefix);
+  }
+  void load(const core::CheckpointData& data, const std::string& prefix) {
+    if (acceleration_) acceleration_->load(data, prefix);
+  }
+
  private:
   struct Measured {
     core::ConvergenceSpec spec;

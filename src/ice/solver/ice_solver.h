@@ -21,6 +21,7 @@
 
 #include "ice/boundary/ice_boundary.h"
 #include "core/health/health.h"
+#include "core/io/checkpoint.h"
 #include "core/parallel/comm.h"
 #include "core/parallel/decomposition.h"
 #include "core/parallel/ghost_exchange.h"
@@ -92,6 +93,15 @@ class IceSolver {
   /// specific volume, volume fraction, compressibility; the pressures) and the clock. Local.
   [[nodiscard]] Checkpoint checkpoint() const;
   void restore(const Checkpoint& c);
+
+  // ---- restart (ice_solver_checkpoint.cpp)
+  /// Puts this rank's complete state under `prefix`: every field of every material (mass,
+  /// velocity, energies, specific volumes, fractions, compressibility, the Lagrangian values, the
+  /// face velocities, the exchange increments), the pressures, the face fluxes, and the clock
+  /// and counters. loadCheckpoint() returns a solver built from the same scene on the same ranks
+  /// to it. Local.
+  void saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const;
+  void loadCheckpoint(const core::CheckpointData& data, const std::string& prefix);
 
   // ---- access
   [[nodiscard]] const core::Field& pressure() const { return st_.press; }

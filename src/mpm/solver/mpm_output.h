@@ -23,6 +23,9 @@ class MpmOutput {
   /// Writes the solver's current state as output step solver.stepCount(); returns the file path.
   std::string write(const MpmSolver& solver);
   [[nodiscard]] std::string xdmfPath() const { return writer_.xdmfPath(); }
+  /// The XDMF index so far (for a checkpoint) and its restart (core::OutputWriter::resumeIndex).
+  [[nodiscard]] std::string indexState() const { return writer_.index().serialize(); }
+  void resumeIndex(const std::string& serialized) { writer_.resumeIndex(serialized); }
   /// Every array name MpmOutput can write (grid and particles), for output.fields.
   static const std::vector<std::string>& fieldNames();
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/health/health.h"
+#include "core/io/checkpoint.h"
 #include "mpm/cell/node_cell_operators.h"
 #include "mpm/grid/boundary_conditions.h"
 #include "mpm/grid/grid.h"
@@ -121,6 +122,13 @@ class MpmSolver {
     time_ = c.time;
     step_ = c.step;
   }
+
+  // ---- restart (mpm_solver_checkpoint.cpp) ------------------------------------------------------
+  /// Puts this rank's complete state under `prefix` (every particle column, history variables
+  /// included; the clock; the time-step collapse reference); loadCheckpoint() returns a solver
+  /// built from the same scene on the same ranks to it. Local.
+  void saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const;
+  void loadCheckpoint(const core::CheckpointData& data, const std::string& prefix);
 
   // ---- diagnostics ---------------------------------------------------------------------------
   [[nodiscard]] Energies energies() const;

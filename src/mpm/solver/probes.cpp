@@ -18,14 +18,14 @@ std::string ProbeRecorder::pathFor(const core::Scene& scene) {
   return scene.output.directory + "/" + scene.name + "_probes.csv";
 }
 
-std::unique_ptr<ProbeRecorder> ProbeRecorder::fromScene(const MpmSolver& solver) {
+std::unique_ptr<ProbeRecorder> ProbeRecorder::fromScene(const MpmSolver& solver, std::int64_t resumeLength) {
   const core::Scene& s = solver.scene();
   if (s.output.probes.empty() || !s.output.enabled) return nullptr;
-  return std::make_unique<ProbeRecorder>(solver, s.output.probes, pathFor(s));
+  return std::make_unique<ProbeRecorder>(solver, s.output.probes, pathFor(s), resumeLength);
 }
 
 ProbeRecorder::ProbeRecorder(const MpmSolver& solver, const std::vector<core::ProbeSpec>& probes,
-                             const std::string& path)
+                             const std::string& path, std::int64_t resumeLength)
     : dim_(solver.scene().mesh.dim()) {
   const core::Comm& comm = solver.comm();
   const ParticleSet& p = solver.particles();
@@ -75,7 +75,10 @@ ProbeRecorder::ProbeRecorder(const MpmSolver& solver, const std::vector<core::Pr
       std::error_code ec;
       if (!dir.empty()) std::filesystem::create_directories(dir, ec);
     }
-    csv_ = std::make_unique<core::CsvWriter>(comm, path, columns_);
+    if (resumeLength >= 0) core::CsvWriter::cutForResume(comm, path, resumeLength);
+    csv_ = std::make_unique<core::CsvWriter>(comm, path, columns_, 0,
+                                             resumeLength >= 0 ? core::CsvWriter::Mode::Append
+                                                               : core::CsvWriter::Mode::Truncate);
   }
 }
 

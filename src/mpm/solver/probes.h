@@ -35,10 +35,13 @@ class ProbeRecorder {
 
   /// Picks the particles of `probes` (collective) and opens `path` on rank 0 (its directory is
   /// created). An empty `path` records without writing (the samples are still gathered).
-  ProbeRecorder(const MpmSolver& solver, const std::vector<core::ProbeSpec>& probes, const std::string& path);
+  /// resumeLength >= 0: a restart continues the file from its first resumeLength bytes
+  /// (core::CsvWriter::cutForResume).
+  ProbeRecorder(const MpmSolver& solver, const std::vector<core::ProbeSpec>& probes, const std::string& path,
+                std::int64_t resumeLength = -1);
   /// The scene's probes into <output.directory>/<scene>_probes.csv; null when the scene has no
   /// probes or output is disabled. Collective.
-  static std::unique_ptr<ProbeRecorder> fromScene(const MpmSolver& solver);
+  static std::unique_ptr<ProbeRecorder> fromScene(const MpmSolver& solver, std::int64_t resumeLength = -1);
   /// The CSV path a scene's probes go to.
   static std::string pathFor(const core::Scene& scene);
 
@@ -49,6 +52,8 @@ class ProbeRecorder {
   [[nodiscard]] const std::vector<std::int64_t>& particleIds() const { return ids_; }
   [[nodiscard]] const std::vector<Sample>& samples() const { return samples_; }
   [[nodiscard]] const std::vector<std::string>& columns() const { return columns_; }
+  /// Bytes of the CSV written so far on this rank (0 where it does not write), for a checkpoint.
+  [[nodiscard]] std::int64_t csvLength() const { return csv_ ? csv_->length() : 0; }
 
  private:
   std::vector<std::string> names_;

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/io/csv_writer.h"
+#include "core/io/run_checkpoints.h"
 #include "core/io/run_record.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
@@ -13,11 +14,14 @@
 
 namespace mpmice::mpm {
 
-int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log) {
+int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log, const std::string& restart) {
   MpmSolver solver(scene, comm);
+  core::RunCheckpoints checkpoints(scene, comm, scene.name, "mpm_solver", restart, &log);
+  const core::CheckpointData* resumed = checkpoints.resumed();
+  if (resumed) solver.loadCheckpoint(*resumed, "mpm");
   core::RunRecord record(scene, comm, "mpm_solver");
   const long long np = solver.globalParticleCount();
-  core::Progress progress(log, comm, 0.0, scene.time.end, core::ProgressOptions{2.0, 0});
+  core::Progress progress(log, comm, solver.time(), scene.time.end, core::ProgressOptions{2.0, 0});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
   if (comm.root())
     log << "  particles: " << np << "\n  shape function: " << scene.mpm.shape_function << ", update: "
@@ -30,8 +34,13 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (scene.output.enabled) {
     output = std::make_unique<MpmOutput>(solver);
     const std::string path = scene.output.directory + "/" + scene.name + "_energies.csv";
+    if (resumed) {
+      core::CsvWriter::cutForResume(comm, path, static_cast<std::int64_t>(resumed->scalar("run.energies_csv")));
+      output->resumeIndex(resumed->text("run.xdmf"));
+    }
     csv = std::make_unique<core::CsvWriter>(comm, path,
-                                            std::vector<std::string>{"step", "time", "kinetic", "strain", "total"});
+                                            std::vector<std::string>{"step", "time", "kinetic", "strain", "total"}, 0,
+                                            resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
     if (comm.root()) log << "  output: " << output->xdmfPath() << " (energies: " << path << ")\n" << std::flush;
   }
   auto write = [&] {
@@ -40,12 +49,26 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     if (output) output->write(solver);
   };
   core::OutputSchedule outputs(scene.output.interval, scene.time.end);
-  if (outputs.due(0.0) && output) {
+  if (resumed) {
+    outputs.resume(resumed->get("run.outputs"));
+  } else if (outputs.due(0.0) && output) {
     solver.projectToGrid();  // node fields of the initial state
     write();
   }
-  const auto probes = ProbeRecorder::fromScene(solver);  // collective; null without probes
-  if (probes) probes->record(solver);
+  // Collective; null without probes.
+  const auto probes =
+      ProbeRecorder::fromScene(solver, resumed ? static_cast<std::int64_t>(resumed->scalar("run.probes_csv")) : -1);
+  if (probes && !resumed) probes->record(solver);
+  auto checkpoint = [&](bool last) {
+    if (!checkpoints.due(solver.time(), last)) return;
+    core::CheckpointData data;
+    solver.saveCheckpoint(data, "mpm");
+    data.put("run.outputs", outputs.position());
+    data.put("run.energies_csv", static_cast<double>(csv ? csv->length() : 0));
+    data.put("run.probes_csv", static_cast<double>(probes ? probes->csvLength() : 0));
+    data.putText("run.xdmf", output ? output->indexState() : std::string());
+    checkpoints.write(data, solver.time(), solver.stepCount());
+  };
   while (core::goesOn(solver.time(), solver.stepCount(), scene.time.end, scene.time.max_steps)) {
     const double dt = solver.advance(outputs.landingTarget(solver.time(), solver.stableTimeStep()));
     checkHealth(solver);  // collective: every rank stops on a non-physical state
@@ -53,8 +76,11 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     if (outputs.due(solver.time())) write();
     progress.step(static_cast<int>(solver.stepCount()), solver.time(), dt, {},
                   core::reached(solver.time(), scene.time.end));
+    const bool last = !core::goesOn(solver.time(), solver.stepCount(), scene.time.end, scene.time.max_steps);
+    if (last && !outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // time.max_steps
+    checkpoint(last);
   }
-  if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // stopped by time.max_steps
+  if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // no step taken
   record.completed();
   const auto e = solver.energies();
   progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");

@@ -6,8 +6,11 @@
 /// output.enabled is false): one HDF5 file of particles and grid nodes plus the XDMF index
 /// (mpm_output.h), and a row of energies in <directory>/<scene>_energies.csv. Probes
 /// (output.probes): the position and displacement of their particles at t = 0 and after every
-/// step in <directory>/<scene>_probes.csv.
+/// step in <directory>/<scene>_probes.csv. Checkpoints (output.checkpoint_interval) hold the
+/// solver, the output schedule, the XDMF index and the CSV lengths; `restart` (a checkpoint file
+/// or an output directory, `--restart PATH`) resumes from one and continues the same series.
 #include <ostream>
+#include <string>
 
 #include "core/parallel/comm.h"
 #include "core/scene/scene.h"
@@ -15,6 +18,7 @@
 namespace mpmice::mpm {
 
 /// Runs the scene to its end on `comm`, printing to `log` (rank 0); returns the exit status.
-int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log);
+int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log,
+                  const std::string& restart = "");
 
 }  // namespace mpmice::mpm

@@ -63,6 +63,15 @@ TEST(CoupleRun, ComposesMpmdLineFromSceneRanks) {
   EXPECT_EQ(plan.describeWorldRank(5), "");
 }
 
+TEST(CoupleRun, RestartPassesThePathToBothPrograms) {
+  const auto s = tinyScene();
+  const auto plan = coupler::composeLaunch(s, "tiny.yaml", "/b", "/x/mpirun", 2, 3, "", "out dir");
+  EXPECT_EQ(plan.commandLine(), "/x/mpirun -np 2 /b/mpm_solver/mpm_solver --restart 'out dir' tiny.yaml : -np 3 "
+                                "/b/ice_solver/ice_solver --restart 'out dir' tiny.yaml");
+  EXPECT_EQ(plan.argv.at(4), "--restart");
+  EXPECT_EQ(plan.argv.at(5), "out dir");  // one argument, no shell
+}
+
 TEST(CoupleRun, ExplainsFailedRanksFromMpirunText) {
   const auto s = tinyScene();
   const auto plan = coupler::composeLaunch(s, "tiny.yaml", "/b", "mpirun", 1, 2);
@@ -105,6 +114,17 @@ TEST(CoupleRun, ComposesTheOpenFoamLaunchWithASerialFluid) {
                                 "pisoFoam -case /o/fluid");
   EXPECT_EQ(plan.describeWorldRank(2), "pisoFoam rank 0");
   ASSERT_EQ(plan.executables.size(), 1u);
+}
+
+TEST(CoupleRun, RestartIsRefusedForTheOpenFoamCoupling) {
+  const auto s = flapScene("fluid");
+  try {
+    (void)coupler::composeLaunch(s, "flap.yaml", "/b", "/x/mpirun", 2, 1, "/o/fluid", "output");
+    ADD_FAILURE() << "--restart with OpenFOAM must be refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--restart is not available for coupling.fluid: openfoam"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(CoupleRun, AddsTheAdapterInsideTheFunctionsDictionary) {

@@ -96,6 +96,10 @@ std::vector<BadScene> badScenes() {
            "  - {shape: {type: circle, center: [0.9, 0.5], radius: 0.2}, material: steel}\n"
            "boundary: {x-: slip_wall, x+: slip_wall}\n",
        {"test.yaml:8:", "geometry[1].shape", "outside the mesh", "x in [0.7, 1.1]", "[0, 1]"}},
+      {"negative checkpoint interval", kBase + "output: {checkpoint_interval: -0.1}\n",
+       {"test.yaml:7:", "output.checkpoint_interval: -0.1 is out of range; expected a number >= 0"}},
+      {"checkpoint interval not a number", kBase + "output: {checkpoint_interval: often}\n",
+       {"test.yaml:7:", "output.checkpoint_interval: expected a number, got 'often'"}},
       {"string where a number is expected", kMesh + "time: {end: soon}\n" + kAir + kRegion,
        {"test.yaml:2:", "time.end: expected a number, got 'soon'"}},
       {"wrong vector length", kBase + "gravity: [0, -9.81]\n",

@@ -1,5 +1,7 @@
 #include "couplings/volume/common/exchange_fields.h"
 
+#include <span>
+
 namespace mpmice::coupler {
 
 SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core::Box& owned)
@@ -41,6 +43,35 @@ std::vector<core::Field*> SolidExchangeFields::at(ExchangePoint p) {
 std::vector<const core::Field*> SolidExchangeFields::at(ExchangePoint p) const {
   const auto fields = const_cast<SolidExchangeFields*>(this)->at(p);
   return {fields.begin(), fields.end()};
+}
+
+namespace {
+template <class Fields, class F>
+void forEachExchangeField(Fields& fields, const std::string& prefix, F&& f) {
+  for (std::size_t k = 0; k < fields.size(); ++k)
+    for (ExchangePoint p : kExchangePoints) {
+      const auto at = fields[k].at(p);
+      for (std::size_t i = 0; i < at.size(); ++i) {
+        std::string name = prefix;
+        name += ".s" + std::to_string(k) + ".p" + std::to_string(static_cast<int>(p)) + "." + std::to_string(i);
+        f(name, *at[i]);
+      }
+    }
+}
+}  // namespace
+
+void saveExchangeFields(const std::vector<SolidExchangeFields>& fields, core::CheckpointData& data,
+                        const std::string& prefix) {
+  forEachExchangeField(fields, prefix, [&](const std::string& name, const core::Field& f) {
+    data.put(name, std::span<const double>(f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())));
+  });
+}
+
+void loadExchangeFields(std::vector<SolidExchangeFields>& fields, const core::CheckpointData& data,
+                        const std::string& prefix) {
+  forEachExchangeField(fields, prefix, [&](const std::string& name, core::Field& f) {
+    data.copyTo(name, std::span<double>(f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())));
+  });
 }
 
 }  // namespace mpmice::coupler

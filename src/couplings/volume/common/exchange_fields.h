@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/field/field.h"
+#include "core/io/checkpoint.h"
 
 namespace mpmice::coupler {
 
@@ -47,5 +48,12 @@ struct SolidExchangeFields {
   [[nodiscard]] std::vector<core::Field*> at(ExchangePoint p);
   [[nodiscard]] std::vector<const core::Field*> at(ExchangePoint p) const;
 };
+
+/// Every exchange field of every solid under `prefix` (a side's held values: a partitioned
+/// schedule starts a step from the other side's last ones), for a checkpoint; load puts them back.
+void saveExchangeFields(const std::vector<SolidExchangeFields>& fields, core::CheckpointData& data,
+                        const std::string& prefix);
+void loadExchangeFields(std::vector<SolidExchangeFields>& fields, const core::CheckpointData& data,
+                        const std::string& prefix);
 
 }  // namespace mpmice::coupler

@@ -12,15 +12,26 @@ SideTotals SideTotals::unpack(const std::vector<double>& v) {
 }
 
 RunOutput::RunOutput(const core::Scene& scene, const core::Comm& comm, const core::Decomposition& decomp,
-                     const std::string& suffix, bool writeCsv)
+                     const std::string& suffix, bool writeCsv, const core::CheckpointData* resumed)
     : scene_(scene), enabled_(scene.output.enabled) {
   if (!enabled_) return;
   writer_ = std::make_unique<core::OutputWriter>(comm, decomp, scene.output.directory, scene.name + suffix);
-  if (writeCsv)
+  if (resumed) writer_->resumeIndex(resumed->text("run.xdmf"));
+  if (writeCsv) {
+    const std::string path = scene.output.directory + "/" + scene.name + "_conservation.csv";
+    if (resumed)
+      core::CsvWriter::cutForResume(comm, path, static_cast<std::int64_t>(resumed->scalar("run.conservation_csv")));
     csv_ = std::make_unique<core::CsvWriter>(
-        comm, scene.output.directory + "/" + scene.name + "_conservation.csv",
-        std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y",
-                                 "momentum_z", "solid_energy", "fluid_energy", "total_energy"});
+        comm, path,
+        std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y", "momentum_z",
+                                 "solid_energy", "fluid_energy", "total_energy"},
+        0, resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
+  }
+}
+
+void RunOutput::save(core::CheckpointData& data) const {
+  data.putText("run.xdmf", writer_ ? writer_->index().serialize() : std::string());
+  data.put("run.conservation_csv", static_cast<double>(csv_ ? csv_->length() : 0));
 }
 
 void RunOutput::writeFields(long step, double time, const std::vector<const core::Field*>& fields,

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/checkpoint.h"
 #include "core/io/csv_writer.h"
 #include "core/io/output_writer.h"
 #include "core/io/particle_output.h"
@@ -28,8 +29,12 @@ class RunOutput {
  public:
   /// Writes under scene.output.directory as <name><suffix>_*.h5 (nothing when output.enabled is
   /// false). writeCsv: this writer also keeps the conservation CSV.
+  /// resumed: a restart continues the XDMF index and the CSV as they were at that checkpoint
+  /// (what save() put there).
   RunOutput(const core::Scene& scene, const core::Comm& comm, const core::Decomposition& decomp,
-            const std::string& suffix = "", bool writeCsv = true);
+            const std::string& suffix = "", bool writeCsv = true, const core::CheckpointData* resumed = nullptr);
+  /// The index and the CSV length, for a checkpoint.
+  void save(core::CheckpointData& data) const;
   void writeFields(long step, double time, const std::vector<const core::Field*>& fields,
                    const core::ParticleOutput* particles);
   void writeTotals(long step, double time, const SideTotals& solid, const SideTotals& fluid);

@@ -10,6 +10,7 @@
 
 namespace mpmice::coupler {
 
-int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log);
+int runFluidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
+                        const std::string& restart = "");
 
 }  // namespace mpmice::coupler

@@ -36,6 +36,18 @@ class FluidSide {
   [[nodiscard]] ice::IceSolver& solver() { return ice_; }
   /// Mass, momentum and energy (internal + kinetic) of the fluids (collective).
   [[nodiscard]] SideTotals totals() const;
+  /// The solver, the held exchange fields and whether the start is done under `prefix`, for a
+  /// checkpoint; load puts them back.
+  void saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const {
+    ice_.saveCheckpoint(data, prefix + ".ice");
+    saveExchangeFields(fields_, data, prefix + ".exchange");
+    data.put(prefix + ".started", started_ ? 1.0 : 0.0);
+  }
+  void loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
+    ice_.loadCheckpoint(data, prefix + ".ice");
+    loadExchangeFields(fields_, data, prefix + ".exchange");
+    started_ = data.scalar(prefix + ".started") != 0.0;
+  }
 
  private:
   static std::span<const double> all(const core::Field& f) {

@@ -9,14 +9,14 @@
 
 namespace mpmice::coupler {
 
-int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream& log) {
+int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream& log, const std::string& restart) {
   // A scene of one kind of material needs one solver: run it alone, and say so.
   if (scene.solids().empty() || scene.fluids().empty()) {
     const bool solids = !scene.solids().empty();
     if (comm.root())
       log << "mpmice: the scene has " << (solids ? "no fluid" : "no solid") << "; running "
           << (solids ? "MPM" : "ICE") << " alone (as " << (solids ? "mpm_solver" : "ice_solver") << " would)\n";
-    return solids ? mpm::runStandalone(scene, comm, log) : ice::runStandalone(scene, comm, log);
+    return solids ? mpm::runStandalone(scene, comm, log, restart) : ice::runStandalone(scene, comm, log, restart);
   }
   mpm::MpmSolver mpm(scene, comm);
   ice::IceSolver ice(scene, comm);
@@ -25,7 +25,7 @@ int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream
   SolidSide solid(mpm);
   FluidSide fluid(ice, scene);
   InMemoryTransport transport;
-  return runVolumeCoupling(scene, {&solid, &fluid}, transport, comm, log, "mpmice");
+  return runVolumeCoupling(scene, {&solid, &fluid}, transport, comm, log, "mpmice", {}, restart);
 }
 
 }  // namespace mpmice::coupler

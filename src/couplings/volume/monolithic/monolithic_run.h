@@ -14,6 +14,7 @@ namespace mpmice::coupler {
 
 /// Runs the scene to its end on `comm`; returns the exit status. A scene with only solids or
 /// only fluids runs that one solver alone (with a line saying so).
-int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream& log);
+int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream& log,
+                  const std::string& restart = "");
 
 }  // namespace mpmice::coupler

@@ -10,6 +10,7 @@
 #include "core/health/health.h"
 #include "core/io/csv_writer.h"
 #include "core/io/output_selection.h"
+#include "core/io/run_checkpoints.h"
 #include "core/io/run_record.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
@@ -41,13 +42,22 @@ void checkHealth(const Sides& sides, Transport& transport, const core::Comm& com
 }  // namespace
 
 int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& transport, const core::Comm& comm,
-                      std::ostream& log, const std::string& label, const std::function<void(long)>& afterStep) {
+                      std::ostream& log, const std::string& label, const std::function<void(long)>& afterStep,
+                      const std::string& restart) {
   const bool both = sides.solid && sides.fluid;
   const auto schedule = makeSchedule(scene, comm);
   const core::Decomposition& decomp =
       sides.solid ? sides.solid->solver().decomposition() : sides.fluid->solver().decomposition();
+  const std::string suffix = both ? "" : sides.solid ? "_solid" : "_fluid";
+  core::RunCheckpoints checkpoints(scene, comm, scene.name + suffix,
+                                   both ? "mpmice" : sides.solid ? "mpm_solver (coupled)" : "ice_solver (coupled)",
+                                   restart, &log);
+  const core::CheckpointData* resumed = checkpoints.resumed();
+  const std::vector<double> clock =
+      resumed ? resumed->get("run.coupled") : std::vector<double>{0.0, 0.0, 0.0, 0.0, 0.0};
+  if (clock.size() != 5) throw std::invalid_argument(resumed->source() + ": checkpoint entry 'run.coupled' is malformed");
 
-  core::Progress progress(log, comm, 0.0, scene.time.end, core::ProgressOptions{sides.solid ? 2.0 : 1e30, 0});
+  core::Progress progress(log, comm, clock[0], scene.time.end, core::ProgressOptions{sides.solid ? 2.0 : 1e30, 0});
   const long long particles = sides.solid ? sides.solid->solver().globalParticleCount() : 0;
   if (sides.solid)
     progress.start(scene.name + " (" + label + ", schedule " + std::string(core::name(scene.coupling.schedule)) +
@@ -55,9 +65,8 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
                    scene.mesh.describe(), comm.size());
   std::vector<std::string> materials;  // output.fields: each side writes its part of the list
   for (const auto& m : scene.materials) materials.push_back(m.name);
-  core::RunRecord record(scene, comm, both ? "mpmice" : sides.solid ? "mpm_solver" : "ice_solver",
-                         both ? "" : sides.solid ? "_solid" : "_fluid");
-  RunOutput out(scene, comm, decomp, both ? "" : sides.solid ? "_solid" : "_fluid", sides.solid != nullptr);
+  core::RunRecord record(scene, comm, both ? "mpmice" : sides.solid ? "mpm_solver" : "ice_solver", suffix);
+  RunOutput out(scene, comm, decomp, suffix, sides.solid != nullptr, resumed);
   auto output = [&](long n, double t) {
     std::vector<core::Field> fields;
     std::vector<const core::Field*> ptrs;
@@ -79,21 +88,60 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   if (scene.output.enabled && sides.solid) {
     std::vector<std::string> cols{"step", "time", "dt", "iterations", "converged", "compute_s", "exchange_s"};
     for (const auto& f : schedule->measuredFields()) cols.push_back("residual_" + f);
-    steps = std::make_unique<core::CsvWriter>(comm, scene.output.directory + "/" + scene.name + "_coupling.csv", cols);
+    const std::string path = scene.output.directory + "/" + scene.name + "_coupling.csv";
+    if (resumed)
+      core::CsvWriter::cutForResume(comm, path, static_cast<std::int64_t>(resumed->scalar("run.coupling_csv")));
+    steps = std::make_unique<core::CsvWriter>(comm, path, cols, 0,
+                                              resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
   }
   // The probes' particles (output.probes): position and displacement at t = 0 and every step.
-  const auto probes = sides.solid ? mpm::ProbeRecorder::fromScene(sides.solid->solver()) : nullptr;
+  const auto probes =
+      sides.solid ? mpm::ProbeRecorder::fromScene(
+                        sides.solid->solver(), resumed ? static_cast<std::int64_t>(resumed->scalar("run.probes_csv")) : -1)
+                  : nullptr;
 
-  // 1. Start.
+  // 1. Start (a restart then returns both sides, the schedule and the clock to the checkpoint;
+  //    in an MPMD launch the two programs first agree that they resume the same step).
   startCoupling(sides, transport);
+  if (!both) {
+    const double mine = resumed ? clock[1] : -1.0;
+    const double theirs = transport.trade({mine}, "restart step")[0];
+    if (mine != theirs) {
+      auto what = [](double s) { return s < 0 ? std::string("a fresh start") : "step " + std::to_string(long(s)); };
+      throw std::invalid_argument(label + ": this program resumes " + what(mine) + ", the peer program " + what(theirs) +
+                                  " (`coupler run --restart PATH` gives both the checkpoints of one step)");
+    }
+  }
   core::StepCollapse collapse(scene.time.dt_collapse_fraction);
-  double t = 0;
-  long n = 0, iterations = 0, unconverged = 0;
+  double t = clock[0];
+  long n = static_cast<long>(clock[1]), iterations = static_cast<long>(clock[2]),
+       unconverged = static_cast<long>(clock[3]);
+  if (resumed) collapse.resumeFirst(clock[4]);
   double computeTotal = 0;
   const double exchangeStart = transport.seconds();
   core::OutputSchedule outputs(scene.output.interval, scene.time.end);
-  if (outputs.due(t)) output(n, t);
-  if (probes) probes->record(sides.solid->solver());
+  if (resumed) {
+    if (sides.solid) sides.solid->loadCheckpoint(*resumed, "solid");
+    if (sides.fluid) sides.fluid->loadCheckpoint(*resumed, "fluid");
+    schedule->load(*resumed, "schedule");
+    outputs.resume(resumed->get("run.outputs"));
+  } else {
+    if (outputs.due(t)) output(n, t);
+    if (probes) probes->record(sides.solid->solver());
+  }
+  auto checkpoint = [&](bool last) {
+    if (!checkpoints.due(t, last)) return;
+    core::CheckpointData data;
+    if (sides.solid) sides.solid->saveCheckpoint(data, "solid");
+    if (sides.fluid) sides.fluid->saveCheckpoint(data, "fluid");
+    schedule->save(data, "schedule");
+    data.put("run.coupled", std::vector<double>{t, double(n), double(iterations), double(unconverged), collapse.first()});
+    data.put("run.outputs", outputs.position());
+    out.save(data);
+    data.put("run.coupling_csv", static_cast<double>(steps ? steps->length() : 0));
+    data.put("run.probes_csv", static_cast<double>(probes ? probes->csvLength() : 0));
+    checkpoints.write(data, t, n);
+  };
 
   // 2. Steps.
   for (;;) {
@@ -150,6 +198,9 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     if (sides.fluid && sides.fluid->solver().semiImplicit())
       extras.emplace_back("lin_iters", double(sides.fluid->solver().linearIterations()));
     progress.step(static_cast<int>(n), t, dt, extras);
+    const bool last = !core::goesOn(t, n, scene.time.end, scene.time.max_steps);
+    if (last && !outputs.written(t) && outputs.due(t, true)) output(n, t);  // the last step
+    checkpoint(last);
   }
   // 3. The last step is always written.
   if (!outputs.written(t) && outputs.due(t, true)) output(n, t);

@@ -10,6 +10,11 @@
 ///    process; "_solid" / "_fluid" in MPMD), the conservation CSV of both sides, the probes and
 ///    the coupling CSV (step, time, dt, iterations, converged, compute_s, exchange_s, residuals)
 ///    on the side that holds the solid.
+/// Checkpoints (output.checkpoint_interval) hold both sides present (solvers and held exchange
+/// fields), the schedule (the acceleration's history), the clock and counters, the output
+/// schedule, the XDMF index and the CSV lengths: `<scene>[_solid|_fluid]_checkpoint_<step>.h5`.
+/// `restart` (`--restart PATH`) resumes from one: the start is made as usual (so both programs
+/// of an MPMD launch trade the same messages), then everything is returned to the checkpoint.
 /// 4. Progress lines with an estimate of the time left, and closing lines: iterations per step,
 ///    steps accepted unconverged, the compute/exchange split of this process.
 #include <functional>
@@ -25,6 +30,7 @@ namespace mpmice::coupler {
 /// Runs the scene to its end. label: who runs ("mpmice", "mpm_solver, coupled to 'ice'");
 /// afterStep(n): called after step n (the MPMD launch tests' fault injection). Returns 0.
 int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& transport, const core::Comm& comm,
-                      std::ostream& log, const std::string& label, const std::function<void(long)>& afterStep = {});
+                      std::ostream& log, const std::string& label, const std::function<void(long)>& afterStep = {},
+                      const std::string& restart = "");
 
 }  // namespace mpmice::coupler

@@ -30,6 +30,10 @@ class CouplingSchedule {
   [[nodiscard]] virtual core::Schedule kind() const = 0;
   /// Names of the measured fields (the CSV columns of the residuals).
   [[nodiscard]] virtual std::vector<std::string> measuredFields() const { return {}; }
+  /// What the schedule carries from step to step (partitioned: whether the first step is done;
+  /// implicit: the acceleration's history), for a checkpoint between steps. Local.
+  virtual void save(core::CheckpointData& /*data*/, const std::string& /*prefix*/) const {}
+  virtual void load(const core::CheckpointData& /*data*/, const std::string& /*prefix*/) {}
 };
 
 /// The schedule of scene.coupling.schedule, with its acceptance checks and acceleration.

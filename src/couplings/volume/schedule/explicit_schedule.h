@@ -12,6 +12,8 @@ class ExplicitSchedule final : public CouplingSchedule {
   explicit ExplicitSchedule(core::Schedule kind) : kind_(kind) {}
   StepReport step(const Sides& sides, Transport& transport, double dt) override;
   [[nodiscard]] core::Schedule kind() const override { return kind_; }
+  void save(core::CheckpointData& data, const std::string& prefix) const override;
+  void load(const core::CheckpointData& data, const std::string& prefix) override;
 
  private:
   core::Schedule kind_;

@@ -17,6 +17,8 @@ class ImplicitSchedule final : public CouplingSchedule {
   ImplicitSchedule(const core::CouplingSpec& spec, const core::Comm& comm);
   StepReport step(const Sides& sides, Transport& transport, double dt) override;
   [[nodiscard]] core::Schedule kind() const override { return kind_; }
+  void save(core::CheckpointData& data, const std::string& prefix) const override;
+  void load(const core::CheckpointData& data, const std::string& prefix) override;
   [[nodiscard]] std::vector<std::string> measuredFields() const override { return iteration_.measuredFields(); }
 
  private:

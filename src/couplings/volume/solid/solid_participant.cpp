@@ -6,14 +6,15 @@
 
 namespace mpmice::coupler {
 
-int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
+int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
+                        const std::string& restart) {
   handshake(p, mpmiceHandshakeSections(scene));
   mpm::MpmSolver mpm(scene, p.local());
   SolidSide side(mpm);
   const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
   MpiTransport transport(p, mpm.decomposition(), peer);
   return runVolumeCoupling(scene, {&side, nullptr}, transport, p.local(), log,
-                           "mpm_solver, coupled to '" + p.peerName() + "'", [&](long n) { maybeInjectFault(p, n); });
+                           "mpm_solver, coupled to '" + p.peerName() + "'", [&](long n) { maybeInjectFault(p, n); }, restart);
 }
 
 }  // namespace mpmice::coupler

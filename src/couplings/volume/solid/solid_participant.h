@@ -12,6 +12,7 @@
 namespace mpmice::coupler {
 
 /// Returns the exit status (0 on success). Throws CouplingTimeout / HandshakeMismatch.
-int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log);
+int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
+                        const std::string& restart = "");
 
 }  // namespace mpmice::coupler

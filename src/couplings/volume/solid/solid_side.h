@@ -36,6 +36,15 @@ class SolidSide {
   [[nodiscard]] SideTotals totals() const;
   /// The particle arrays for the OutputWriter (views into the solver's storage).
   [[nodiscard]] core::ParticleOutput particleOutput() const;
+  /// The solver and the held exchange fields under `prefix`, for a checkpoint; load puts them back.
+  void saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const {
+    mpm_.saveCheckpoint(data, prefix + ".mpm");
+    saveExchangeFields(fields_, data, prefix + ".exchange");
+  }
+  void loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
+    mpm_.loadCheckpoint(data, prefix + ".mpm");
+    loadExchangeFields(fields_, data, prefix + ".exchange");
+  }
 
  private:
   mpm::MpmSolver& mpm_;

@@ -1,0 +1,79 @@
+// IceSolver's restart state: every stored field (ghosts included, so the next step reads exactly
+// what it would have read), the clock and the counters. What the scene gives again (the EOS, the
+// boundary conditions, the sources, the exchange coefficients, the initial pressure) the solver a
+// restart builds recomputes as the original run did; scratch is rewritten before it is read.
+#include <span>
+#include <stdexcept>
+
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+namespace {
+/// `a` followed by `b` (appended, not operator+: GCC 12 misreads "x" + std::string under -O3).
+std::string cat(const std::string& a, const std::string& b) {
+  std::string s = a;
+  s += b;
+  return s;
+}
+
+/// Every field of the state, with its checkpoint name.
+template <class State, class F>
+void forEveryField(State& st, F&& f) {
+  for (std::size_t m = 0; m < st.mat.size(); ++m) {
+    auto& x = st.mat[m];
+    std::string p = "m";
+    p += std::to_string(m);
+    p += '.';
+    f(cat(p, "mass"), x.mass);
+    f(cat(p, "vel"), x.vel);
+    f(cat(p, "eint"), x.eint);
+    f(cat(p, "spvol"), x.spvol);
+    f(cat(p, "theta"), x.theta);
+    f(cat(p, "kappa"), x.kappa);
+    f(cat(p, "velL"), x.velL);
+    f(cat(p, "eintL"), x.eintL);
+    f(cat(p, "spvolL"), x.spvolL);
+    for (int d = 0; d < 3; ++d) f(cat(cat(p, "velFace"), std::to_string(d)), x.velFace[d]);
+    f(cat(p, "dMom"), x.dMom);
+    f(cat(p, "dEnergy"), x.dEnergy);
+  }
+  f("press", st.press);
+  f("pressEq", st.pressEq);
+  f("dp", st.dp);
+  f("iters", st.iters);
+  f("divU", st.divU);
+  for (int d = 0; d < 3; ++d) f(cat("volFlux", std::to_string(d)), st.volFlux[d]);
+  for (int d = 0; d < 3; ++d) f(cat("pressFace", std::to_string(d)), st.pressFace[d]);
+}
+
+std::size_t sizeOf(const core::Field& f) { return static_cast<std::size_t>(f.npts() * f.ncomp()); }
+}  // namespace
+
+void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const {
+  forEveryField(st_, [&](const std::string& name, const core::Field& f) {
+    data.put(cat(cat(prefix, "."), name), std::span<const double>(f.data(), sizeOf(f)));
+  });
+  data.put(prefix + ".clock", std::vector<double>{t_, static_cast<double>(nsteps_), dt_, collapse_.first(),
+                                                  static_cast<double>(fallbacks_), static_cast<double>(linIters_),
+                                                  static_cast<double>(linItersTotal_)});
+}
+
+void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
+  forEveryField(st_, [&](const std::string& name, core::Field& f) {
+    data.copyTo(cat(cat(prefix, "."), name), std::span<double>(f.data(), sizeOf(f)));
+  });
+  const auto& c = data.get(prefix + ".clock");
+  if (c.size() != 7)
+    throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".clock' has " +
+                                std::to_string(c.size()) + " values, expected 7");
+  t_ = c[0];
+  nsteps_ = static_cast<long>(c[1]);
+  dt_ = c[2];
+  collapse_.resumeFirst(c[3]);
+  fallbacks_ = static_cast<long>(c[4]);
+  linIters_ = static_cast<int>(c[5]);
+  linItersTotal_ = static_cast<long>(c[6]);
+}
+
+}  // namespace mpmice::ice

@@ -1,0 +1,42 @@
+// MpmSolver's restart state: what a step reads that the scene does not give again. The solver a
+// restart builds from the scene recomputes the grid, the models, the mass floors and the
+// decomposition exactly as the original run did; the particles (every column, in their stored
+// order, so sums run in the same order), the clock and the collapse reference come from here.
+#include <stdexcept>
+
+#include "mpm/solver/mpm_solver.h"
+
+namespace mpmice::mpm {
+
+void MpmSolver::saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const {
+  std::vector<double> buf;
+  buf.reserve(p_.size() * ParticleSet::packedSize());
+  for (std::size_t i = 0; i < p_.size(); ++i) p_.pack(i, buf);
+  data.put(prefix + ".particles", std::move(buf));
+  data.put(prefix + ".clock", std::vector<double>{time_, static_cast<double>(step_), dt_, collapse_.first()});
+}
+
+void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
+  const auto& buf = data.get(prefix + ".particles");
+  const std::size_t w = ParticleSet::packedSize();
+  if (buf.size() % w != 0)
+    throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".particles' holds " +
+                                std::to_string(buf.size()) + " values, not a multiple of the " + std::to_string(w) +
+                                " per particle of this program");
+  p_.resize(0);
+  p_.reserve(buf.size() / w);
+  for (std::size_t k = 0; k < buf.size(); k += w) p_.unpack(buf.data() + k);
+  p_.updateMaterialRanges(static_cast<int>(scene_.materials.size()));
+  if (!p_.groupedByMaterial())
+    throw std::invalid_argument(data.source() + ": the checkpoint's particles are not grouped by material");
+  const auto& clock = data.get(prefix + ".clock");
+  if (clock.size() != 4)
+    throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".clock' has " +
+                                std::to_string(clock.size()) + " values, expected 4");
+  time_ = clock[0];
+  step_ = static_cast<long>(clock[1]);
+  dt_ = clock[2];
+  collapse_.resumeFirst(clock[3]);
+}
+
+}  // namespace mpmice::mpm
