@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "coupler/cli/process.h"
+#include "coupler/cli/stop_signals.h"
 
 namespace mpmice::study {
 
@@ -48,8 +49,9 @@ PointResult runPoint(const std::vector<std::string>& argv, const std::string& ru
     run = coupler::runToFileWithin(argv, log, timeLimit);
     r.walls.push_back(run.wallSeconds);
     r.peakRssMb = std::max(r.peakRssMb, double(run.peakRssKb) / 1024.0);
-    if (run.timedOut || run.status != 0) break;
+    if (run.timedOut || run.stoppedBy != 0 || run.status != 0) break;
   }
+  r.stoppedBy = run.stoppedBy;
   r.exitCode = run.status;
   std::vector<double> w = r.walls;
   std::sort(w.begin(), w.end());
@@ -61,9 +63,16 @@ PointResult runPoint(const std::vector<std::string>& argv, const std::string& ru
   const RunCounts counts = parseRunLog(text.str());
   r.steps = counts.steps;
   r.iterationsPerStep = counts.iterationsPerStep;
+  if (run.stoppedBy != 0) {
+    r.status = "stopped";
+    r.note = "stopped by " + coupler::signalName(run.stoppedBy);
+    return r;
+  }
   if (run.timedOut) {
+    std::ostringstream limit;
+    limit << timeLimit;
     r.status = "timeout";
-    r.note = "stopped at the time limit of " + std::to_string(timeLimit) + " s";
+    r.note = "stopped at the time limit of " + limit.str() + " s";
     return r;
   }
   if (run.status != 0) {

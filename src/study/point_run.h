@@ -29,6 +29,7 @@ struct PointResult {
   double iterationsPerStep = -1;
   double error = 0;    // NaN unless status is ok
   std::string note;    // why the error is missing (the reference's message), or the log's last line
+  int stoppedBy = 0;   // the study got SIGINT / SIGTERM (forwarded to the run): no result
 };
 
 /// Runs `argv` `repeats` times (stopping at the first that does not end 0), each with its output

@@ -8,6 +8,7 @@
 
 #include "core/scene/scene.h"
 #include "coupler/cli/process.h"
+#include "coupler/cli/stop_signals.h"
 #include "study/pareto.h"
 #include "study/point_run.h"
 
@@ -119,7 +120,9 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
     fs::create_directories(root);
     writeText(marker, readText(s.file));
   }
-  // 3. The points.
+  // 3. The points. SIGINT / SIGTERM go to the running point's process group; the study stops
+  // after it, leaving that point without a result (--resume runs it again).
+  const coupler::StopSignals signals;
   std::vector<PointResult> results;
   std::vector<TradePoint> trade;
   std::size_t ok = 0;
@@ -150,6 +153,11 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
       out << "study " << s.name << ": point " << i + 1 << "/" << s.points.size() << " (" << label << "): "
           << coupler::shellLine(argv) << std::endl;
       r = runPoint(argv, pr.dir.string(), s.timeLimit, s.repeats, ref, RunFiles{pr.dir.string(), sceneFile.string(), pr.sceneName});
+      if (r.stoppedBy != 0) {
+        err << "study " << s.name << ": stopped by " << coupler::signalName(r.stoppedBy) << " during point " << i + 1
+            << " (no result written; --resume runs it again)\n";
+        return 128 + r.stoppedBy;
+      }
       writeText(resultFile, resultYaml(r));
       out << "  " << r.status << ": error " << num(r.error, 4) << ", wall " << num(r.wallSeconds, 3) << " s"
           << (r.walls.size() > 1 ? " (median of " + std::to_string(r.walls.size()) + ")" : "") << ", " << r.steps << " steps, " << num(r.iterationsPerStep, 3) << " iterations per step, peak RSS "

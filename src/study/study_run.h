@@ -23,7 +23,8 @@ std::vector<std::string> pointCommand(const Study& s, const Point& p, const std:
 
 /// Runs the study. Returns 0 when every point is ok, 3 when the CSV is written but some point
 /// failed, timed out or could not be measured; throws StudyError on a bad study, a bad key path
-/// or a refused study folder (nothing run).
+/// or a refused study folder (nothing run); 128 + signal when SIGINT / SIGTERM stopped it (the
+/// running point gets the signal and stays without a result).
 int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostream& err);
 
 }  // namespace mpmice::study

@@ -1,5 +1,8 @@
 #include "coupler/cli/process.h"
 
+#include "coupler/cli/stop_signals.h"
+
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -188,8 +191,14 @@ TimedRun runToFileWithin(const std::vector<std::string>& argv, const std::string
     const int rc = waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
     if (rc == 0 && info.si_pid == pid) break;
     if (rc != 0 && errno != EINTR) break;
+    if (const int sig = StopSignals::received(); sig != 0 && run.stoppedBy == 0) {  // forwarded once
+      run.stoppedBy = sig;
+      ::kill(-pid, sig);
+      termSent = true;
+      killAt = std::min(killAt, seconds() + 5.0);
+    }
     if (seconds() >= killAt) {
-      run.timedOut = true;
+      if (run.stoppedBy == 0) run.timedOut = true;
       ::kill(-pid, termSent ? SIGKILL : SIGTERM);
       if (termSent) break;
       termSent = true;

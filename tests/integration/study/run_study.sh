@@ -7,7 +7,8 @@
 #  2. the same command again: refused (exit 2, naming the folder), nothing changed;
 #  3. --resume: every point skipped, the same CSV rows;
 #  4. a point stopped by its time limit: status timeout, exit 3, the CSV still written;
-#  5. two points through `coupler run` (MPMD, explicit_parallel on 1 + 1 ranks): ok, finite errors.
+#  5. two points through `coupler run` (MPMD, explicit_parallel on 1 + 1 ranks): ok, finite errors;
+#  6. SIGTERM to the study: forwarded to the running point, exit 143, no result, nothing left.
 #   run_study.sh BUILD_DIR TINY_CYLINDER_YAML
 set -u
 bin=$1 scene=$2 status=0
@@ -120,6 +121,30 @@ cat run5.txt
 awk -F, 'NR > 1 && ($9 != "ok" || $3 == "nan" || !($3 + 0 > 0)) { print "FAIL: MPMD row " NR - 1 ": " $0; bad = 1 }
          END { exit bad || NR != 3 }' mpmd/mpmd.csv || { fail "MPMD CSV"; cat mpmd/mpmd.csv; }
 [ -f mpmd/001_linear/pressurized_cylinder_solid_run.yaml ] || fail "the MPMD point left no solid run record"
+
+# 6. SIGTERM to the study reaches the running point: the study ends 128 + 15 without a result for
+#    it, and no process of the point is left.
+cat >stop.yaml <<EOS
+study: stop
+scene: $scene
+reference: lame_cylinder
+time_limit: 120
+set: {time.end: 10.0, output.interval: 0}
+points:
+  - {mesh.spacing: 0.05}
+EOS
+"$study" stop.yaml --out stop >run6.txt 2>&1 &
+spid=$!
+for _ in $(seq 100); do [ -s stop/001_0.05/run.log ] && break; sleep 0.1; done
+kill -TERM $spid
+wait $spid
+rc=$?
+cat run6.txt
+[ $rc -eq 143 ] || fail "a stopped study: exit $rc, expected 143"
+grep -q "stopped by SIGTERM during point 1" run6.txt || fail "the stop is not reported"
+[ ! -e stop/001_0.05/result.yaml ] || fail "a stopped point has a result"
+for _ in $(seq 50); do pgrep -f "$work/stop/001_0.05/scene.yaml" >/dev/null || break; sleep 0.1; done
+pgrep -af "$work/stop/001_0.05/scene.yaml" && fail "the stopped point's program is still running"
 
 [ $status -eq 0 ] && echo "study_tiny_cylinder: ok"
 exit $status
