@@ -1,12 +1,18 @@
 #include "coupler/cli/process.h"
 
+#include "coupler/cli/stop_signals.h"
+
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <spawn.h>
 #include <stdexcept>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 extern char** environ;
@@ -145,7 +151,9 @@ int Process::wait() {
   return shellStatus(status);
 }
 
-int runToFile(const std::vector<std::string>& argv, const std::string& logPath, const std::vector<std::string>& env) {
+namespace {
+/// spawn() with stdout + stderr into `logPath` (created or truncated).
+pid_t spawnToFile(const std::vector<std::string>& argv, const std::string& logPath, const std::vector<std::string>& env) {
   const int fd = open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error("coupler: cannot write " + logPath + ": " + std::strerror(errno));
   pid_t pid = -1;
@@ -156,10 +164,57 @@ int runToFile(const std::vector<std::string>& argv, const std::string& logPath, 
     throw;
   }
   close(fd);
+  return pid;
+}
+}  // namespace
+
+int runToFile(const std::vector<std::string>& argv, const std::string& logPath, const std::vector<std::string>& env) {
+  const pid_t pid = spawnToFile(argv, logPath, env);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   return shellStatus(status);
+}
+
+TimedRun runToFileWithin(const std::vector<std::string>& argv, const std::string& logPath, double limitSeconds,
+                         const std::vector<std::string>& env) {
+  if (!(limitSeconds > 0)) throw std::invalid_argument("runToFileWithin: the time limit must be > 0 s");
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const pid_t pid = spawnToFile(argv, logPath, env);
+  const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  TimedRun run;
+  double killAt = limitSeconds;
+  bool termSent = false;
+  for (;;) {  // poll without reaping (the group's id stays reserved while it is a zombie)
+    siginfo_t info{};
+    const int rc = waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+    if (rc == 0 && info.si_pid == pid) break;
+    if (rc != 0 && errno != EINTR) break;
+    if (const int sig = StopSignals::received(); sig != 0 && run.stoppedBy == 0) {  // forwarded once
+      run.stoppedBy = sig;
+      ::kill(-pid, sig);
+      termSent = true;
+      killAt = std::min(killAt, seconds() + 5.0);
+    }
+    if (seconds() >= killAt) {
+      if (run.stoppedBy == 0) run.timedOut = true;
+      ::kill(-pid, termSent ? SIGKILL : SIGTERM);
+      if (termSent) break;
+      termSent = true;
+      killAt = seconds() + 5.0;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(-pid, SIGKILL);  // nothing of the group outlives its leader
+  int status = 0;
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  run.wallSeconds = seconds();
+  run.status = shellStatus(status);
+  run.peakRssKb = usage.ru_maxrss;
+  return run;
 }
 
 }  // namespace mpmice::coupler

@@ -48,4 +48,21 @@ class Process {
 /// Runs argv to its end with stdout + stderr into `logPath`; returns its exit status.
 int runToFile(const std::vector<std::string>& argv, const std::string& logPath, const std::vector<std::string>& env = {});
 
+/// What a bounded run measured (runToFileWithin).
+struct TimedRun {
+  int status = 0;             // the shell's convention (128 + signal number when killed)
+  bool timedOut = false;      // the time limit ended it (its group got SIGTERM, then SIGKILL)
+  int stoppedBy = 0;          // a SIGINT / SIGTERM recorded by a live StopSignals, forwarded to its group
+  double wallSeconds = 0;     // from start to reaping
+  long peakRssKb = 0;         // wait4's ru_maxrss: the largest resident set of the process or of
+                              // any descendant it waited for (the largest one, not a sum)
+};
+
+/// runToFile with a time limit: argv starts in its own process group with stdout + stderr into
+/// `logPath`; after `limitSeconds` (> 0) the group gets SIGTERM and, 5 s later, SIGKILL. A
+/// SIGINT / SIGTERM recorded by a live StopSignals (stop_signals.h) is forwarded to the group
+/// the same way (SIGKILL 5 s later).
+TimedRun runToFileWithin(const std::vector<std::string>& argv, const std::string& logPath, double limitSeconds,
+                         const std::vector<std::string>& env = {});
+
 }  // namespace mpmice::coupler

@@ -23,6 +23,7 @@
 #include "coupler/cli/openfoam_case.h"
 #include "coupler/cli/process.h"
 #include "coupler/cli/program_locator.h"
+#include "coupler/cli/stop_signals.h"
 #include "core/io/run_lock.h"
 #include "core/scene/did_you_mean.h"
 #include "core/version.h"
@@ -120,41 +121,6 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
 
 namespace {
 
-volatile std::sig_atomic_t g_stopSignal = 0;
-
-std::string signalName(int sig) {
-  switch (sig) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    default: return "signal " + std::to_string(sig);
-  }
-}
-
-extern "C" void recordStopSignal(int sig) { g_stopSignal = sig; }
-
-/// SIGINT and SIGTERM recorded (not fatal) while it lives; the previous handlers restored after.
-class StopSignals {
- public:
-  StopSignals() {
-    g_stopSignal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = recordStopSignal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0;  // no SA_RESTART: poll() returns at once
-    sigaction(SIGINT, &sa, &oldInt_);
-    sigaction(SIGTERM, &sa, &oldTerm_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &oldInt_, nullptr);
-    sigaction(SIGTERM, &oldTerm_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction oldInt_ {}, oldTerm_ {};
-};
-
 /// Runs the launch without a shell, its output through LaunchOutput (cli/launch_output.h) to `out`. SIGINT/SIGTERM to the
 /// coupler go to the launch's process group; the coupler waits for it (SIGKILL after 10 s).
 int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std::unique_ptr<core::LogFile> fluidLog) {
@@ -168,8 +134,8 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std:
   bool killed = false;
   std::optional<std::chrono::steady_clock::time_point> endedAt;
   for (;;) {
-    if (g_stopSignal != 0 && forwarded == 0) {
-      forwarded = g_stopSignal;
+    if (StopSignals::received() != 0 && forwarded == 0) {
+      forwarded = StopSignals::received();
       forwardedAt = std::chrono::steady_clock::now();
       err << "coupler: " << signalName(forwarded) << " received: stopping the launch\n" << std::flush;
       launch.signalGroup(forwarded);

@@ -35,5 +35,12 @@ expect 0 "^usage: coupler check" out -- "$c" check --help
 expect 0 "--quiet" out -- "$c" check --help
 expect 0 "^coupler [0-9]" out -- "$c" run --version
 expect 2 "no command given" err -- "$c"
+st=$bin/study/study
+expect 0 "^usage: study" out -- "$st" --help
+expect 0 "--resume" out -- "$st" --help
+expect 0 "Sample runs" out -- "$st" --help
+expect 0 "^study [0-9]+\.[0-9]+\.[0-9]+ \(.+\)$" out -- "$st" --version
+expect 2 "usage: study study.yaml" err -- "$st"
+expect 2 "usage: study study.yaml" err -- "$st" --no-such-option a.yaml
 [ $status -eq 0 ] && echo "help_version: ok"
 exit $status

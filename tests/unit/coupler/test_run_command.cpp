@@ -278,3 +278,24 @@ TEST(CoupleRun, FindsTheProgramsOnPathWhenNoneIsBesideTheCoupler) {
   setenv("PATH", saved.c_str(), 1);
   std::filesystem::remove_all(tree);
 }
+
+TEST(CoupleRun, ABoundedRunReportsItsStatusItsMemoryAndItsTimeLimit) {
+  const auto log = std::filesystem::temp_directory_path() / ("bounded_" + std::to_string(::getpid()) + ".log");
+  // A run that ends by itself: its status, its output in the log, its peak RSS.
+  auto r = mpmice::coupler::runToFileWithin({"sh", "-c", "echo out; echo err >&2; exit 7"}, log.string(), 30);
+  EXPECT_FALSE(r.timedOut);
+  EXPECT_EQ(r.status, 7);
+  EXPECT_GT(r.peakRssKb, 0);
+  EXPECT_GT(r.wallSeconds, 0);
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "out\nerr\n");
+  // A run past its limit: its group gets SIGTERM (status 128 + 15), and the child it started too.
+  r = mpmice::coupler::runToFileWithin({"sh", "-c", "sleep 60 & wait"}, log.string(), 0.2);
+  EXPECT_TRUE(r.timedOut);
+  EXPECT_EQ(r.status, 128 + 15);
+  // A limit that is not > 0 is refused.
+  EXPECT_THROW((void)mpmice::coupler::runToFileWithin({"true"}, log.string(), 0), std::invalid_argument);
+  std::filesystem::remove(log);
+}

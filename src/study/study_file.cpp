@@ -1,0 +1,161 @@
+#include "study/study_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "study/key_path.h"
+#include "study/reference/references.h"
+
+namespace mpmice::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void fail(const std::string& file, const std::string& key, const std::string& what) {
+  throw StudyError(file + ": " + (key.empty() ? "" : "'" + key + "': ") + what);
+}
+
+std::string scalar(const std::string& file, const YAML::Node& n, const std::string& key) {
+  if (!n.IsScalar()) fail(file, key, "expected a string");
+  return n.Scalar();
+}
+
+/// The key-value pairs of a mapping, in the file's order.
+std::vector<std::pair<std::string, YAML::Node>> pairs(const std::string& file, const YAML::Node& n,
+                                                     const std::string& key) {
+  if (!n.IsMap()) fail(file, key, "expected a mapping of scene key paths to values");
+  std::vector<std::pair<std::string, YAML::Node>> out;
+  for (const auto& kv : n) {
+    const std::string k = kv.first.as<std::string>();
+    try {
+      if (k != "ranks") parseKeyPath(k);
+    } catch (const KeyPathError& e) {
+      fail(file, key, e.what());
+    }
+    out.emplace_back(k, kv.second);
+  }
+  return out;
+}
+
+void checkRanks(const std::string& file, const YAML::Node& v, const std::string& key) {
+  int r = 0;
+  try {
+    r = v.as<int>();
+  } catch (const YAML::Exception&) {
+    fail(file, key, "ranks must be an integer >= 1, got '" + valueText(v) + "'");
+  }
+  if (r < 1) fail(file, key, "ranks must be an integer >= 1, got " + std::to_string(r));
+}
+
+}  // namespace
+
+Study readStudy(const std::string& path) {
+  Study s;
+  s.file = path;
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    fail(path, "", "cannot read the study file");
+  } catch (const YAML::Exception& e) {
+    fail(path, "", std::string("not valid YAML: ") + e.what());
+  }
+  if (!root.IsMap()) fail(path, "", "expected a mapping (study, scene, program, reference, time_limit, set, axes, points)");
+  const std::set<std::string> known{"study", "scene", "program", "reference", "time_limit", "repeats", "set", "axes", "points"};
+  for (const auto& kv : root) {
+    const std::string k = kv.first.as<std::string>();
+    if (!known.count(k))
+      fail(path, k, "unknown key (valid: study, scene, program, reference, time_limit, repeats, set, axes, points)");
+  }
+  s.name = root["study"] ? scalar(path, root["study"], "study") : fs::path(path).stem().string();
+  if (s.name.empty() || s.name.find('/') != std::string::npos) fail(path, "study", "expected a name without '/'");
+  if (!root["scene"]) fail(path, "scene", "required: the base scene file (relative to the study file)");
+  const fs::path scene = scalar(path, root["scene"], "scene");
+  s.scene = (scene.is_absolute() ? scene : fs::path(path).parent_path() / scene).lexically_normal().string();
+  if (!fs::is_regular_file(s.scene)) fail(path, "scene", "no scene file " + s.scene);
+  const std::string program = root["program"] ? scalar(path, root["program"], "program") : "mpmice";
+  if (program == "mpmice") s.program = Program::Mpmice;
+  else if (program == "coupler_run") s.program = Program::CouplerRun;
+  else fail(path, "program", "'" + program + "' is not a program (valid: mpmice, coupler_run)");
+  if (!root["reference"]) fail(path, "reference", "required (valid: " + referenceNames() + ")");
+  s.reference = scalar(path, root["reference"], "reference");
+  try {
+    (void)findReference(s.reference);
+  } catch (const std::invalid_argument& e) {
+    fail(path, "reference", e.what());
+  }
+  if (root["time_limit"]) {
+    try {
+      s.timeLimit = root["time_limit"].as<double>();
+    } catch (const YAML::Exception&) {
+      fail(path, "time_limit", "expected a number of seconds > 0");
+    }
+    if (!(s.timeLimit > 0) || !std::isfinite(s.timeLimit)) fail(path, "time_limit", "expected a number of seconds > 0");
+  }
+  if (root["repeats"]) {
+    try {
+      s.repeats = root["repeats"].as<int>();
+    } catch (const YAML::Exception&) {
+      fail(path, "repeats", "expected an integer >= 1");
+    }
+    if (s.repeats < 1) fail(path, "repeats", "expected an integer >= 1, got " + std::to_string(s.repeats));
+  }
+  if (root["set"]) s.set = pairs(path, root["set"], "set");
+  for (const auto& [k, v] : s.set)
+    if (k == "ranks") fail(path, "set", "'ranks' is an axis or a point setting, not a `set` entry");
+  if (root["axes"] && root["points"]) fail(path, "points", "give either `axes` (the full grid) or `points`, not both");
+  if (root["axes"]) {
+    for (const auto& [k, v] : pairs(path, root["axes"], "axes")) {
+      if (!v.IsSequence() || v.size() == 0) fail(path, "axes." + k, "expected a non-empty list of values");
+      Axis a{k, {}};
+      for (const auto& x : v) a.values.push_back(x);
+      s.axes.push_back(a);
+    }
+    s.points = expandGrid(s.axes);
+  } else if (root["points"]) {
+    if (!root["points"].IsSequence() || root["points"].size() == 0)
+      fail(path, "points", "expected a non-empty list of mappings (key path: value)");
+    for (std::size_t i = 0; i < root["points"].size(); ++i)
+      s.points.push_back(Point{pairs(path, root["points"][i], "points[" + std::to_string(i) + "]")});
+  } else {
+    fail(path, "axes", "required: `axes` (the full grid) or `points` (an explicit list)");
+  }
+  for (const auto& p : s.points)
+    for (const auto& [k, v] : p.settings) {
+      if (k == "ranks") {
+        checkRanks(path, v, k);
+        if (s.program != Program::Mpmice)
+          fail(path, k, "the ranks of `coupler_run` are the scene's keys coupling.ranks.mpm and coupling.ranks.ice");
+      }
+      bool seen = false;
+      for (const auto& c : s.columns) seen = seen || c == k;
+      if (!seen) s.columns.push_back(k);
+    }
+  return s;
+}
+
+YAML::Node variantScene(const Study& s, const YAML::Node& base, const Point& p, const std::string& runDir) {
+  YAML::Node scene = YAML::Clone(base);
+  auto apply = [&](const std::string& where, const std::string& key, const YAML::Node& v) {
+    if (key == "ranks") return;
+    try {
+      setKeyPath(scene, key, v);
+    } catch (const KeyPathError& e) {
+      fail(s.file, where, std::string(e.what()) + " (in the scene " + s.scene + ")");
+    }
+  };
+  for (const auto& [k, v] : s.set) apply("set", k, v);
+  for (const auto& [k, v] : p.settings) apply(s.axes.empty() ? "points" : "axes", k, v);
+  scene["output"]["directory"] = runDir;
+  return scene;
+}
+
+int pointRanks(const Point& p) {
+  for (const auto& [k, v] : p.settings)
+    if (k == "ranks") return v.as<int>();
+  return 1;
+}
+
+}  // namespace mpmice::study

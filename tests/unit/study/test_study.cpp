@@ -1,0 +1,343 @@
+// The study tool's pieces: grid expansion (order, count), key paths (parse, set, every error names
+// the path), the study file (each bad input an error naming the file and the key), variants
+// checked by the scene schema, the closing-line parser, the Pareto front, the reference registry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "core/scene/scene.h"
+
+#include "study/grid.h"
+#include "study/key_path.h"
+#include "study/pareto.h"
+#include "study/point_run.h"
+#include "study/reference/references.h"
+#include "study/study_file.h"
+#include "study/study_run.h"
+
+namespace fs = std::filesystem;
+using namespace mpmice::study;
+
+namespace {
+
+Axis axis(const std::string& key, const std::vector<std::string>& values) {
+  Axis a{key, {}};
+  for (const auto& v : values) a.values.push_back(YAML::Load(v));
+  return a;
+}
+
+std::string values(const Point& p) {
+  std::string s;
+  for (const auto& [k, v] : p.settings) {
+    if (!s.empty()) s.push_back(',');
+    s.append(valueText(v));
+  }
+  return s;
+}
+
+/// A study file in a fresh folder under the test's temp dir, with `body` after the common head.
+class StudyFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("test_study_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& body, const std::string& head = "") {
+    const std::string file = (dir_ / "s.yaml").string();
+    std::ofstream(file) << (head.empty() ? "scene: " + std::string(TINY_CYLINDER) + "\nreference: lame_cylinder\n" : head)
+                        << body;
+    return file;
+  }
+  /// The StudyError message of reading `file` and dry-running it (variants checked).
+  std::string errorOf(const std::string& file) {
+    try {
+      const Study s = readStudy(file);
+      StudyOptions o;
+      o.out = (dir_ / "out").string();
+      o.dryRun = true;
+      std::ostringstream out, err;
+      runStudy(s, o, out, err);
+    } catch (const StudyError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST(Grid, FullGridFirstAxisSlowest) {
+  const auto pts = expandGrid({axis("mesh.spacing", {"0.05", "0.025"}), axis("mpm.shape_function", {"linear", "gimp", "bspline2"})});
+  ASSERT_EQ(pts.size(), 6u);
+  const std::vector<std::string> want{"0.05,linear", "0.05,gimp", "0.05,bspline2",
+                                      "0.025,linear", "0.025,gimp", "0.025,bspline2"};
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    EXPECT_EQ(values(pts[i]), want[i]) << "point " << i;
+    ASSERT_EQ(pts[i].settings.size(), 2u);
+    EXPECT_EQ(pts[i].settings[0].first, "mesh.spacing");
+    EXPECT_EQ(pts[i].settings[1].first, "mpm.shape_function");
+  }
+}
+
+TEST(Grid, ThreeAxesCountAndLastFastest) {
+  const auto pts = expandGrid({axis("a", {"1", "2"}), axis("b", {"x", "y"}), axis("c", {"p", "q", "r"})});
+  ASSERT_EQ(pts.size(), 12u);
+  EXPECT_EQ(values(pts[0]), "1,x,p");
+  EXPECT_EQ(values(pts[1]), "1,x,q");
+  EXPECT_EQ(values(pts[3]), "1,y,p");
+  EXPECT_EQ(values(pts[6]), "2,x,p");
+  EXPECT_EQ(values(pts[11]), "2,y,r");
+}
+
+TEST(Grid, NoAxesIsTheBaseAndAnEmptyAxisIsAnError) {
+  const auto pts = expandGrid({});
+  ASSERT_EQ(pts.size(), 1u);
+  EXPECT_TRUE(pts[0].settings.empty());
+  EXPECT_EQ(pointLabel(pts[0]), "base");
+  try {
+    (void)expandGrid({axis("mesh.spacing", {})});
+    FAIL() << "an axis without values was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh.spacing"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Grid, LabelsAndFolders) {
+  const auto pts = expandGrid({axis("mesh.spacing", {"0.025"}), axis("coupling.acceleration", {"{type: aitken, relaxation: 0.5}"})});
+  EXPECT_EQ(pointLabel(pts[0]), "0.025 / {type: aitken, relaxation: 0.5}");
+  EXPECT_EQ(pointFolder(pts[0], 7), "007_0.025__type__aitken__relaxation__0.5_");
+}
+
+TEST(KeyPath, Parses) {
+  const auto s = parseKeyPath("geometry[wall].particles_per_cell");
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].key, "geometry");
+  ASSERT_TRUE(s[0].select);
+  EXPECT_EQ(*s[0].select, "wall");
+  EXPECT_EQ(s[1].key, "particles_per_cell");
+  EXPECT_FALSE(s[1].select);
+  EXPECT_EQ(parseKeyPath("mesh.spacing").size(), 2u);
+}
+
+TEST(KeyPath, SyntaxErrorsNameThePath) {
+  for (const std::string bad : {"", "mesh..spacing", "mesh.", ".mesh", "geometry[wall", "geometry[].x", "geometry[wall]x"}) {
+    try {
+      (void)parseKeyPath(bad);
+      ADD_FAILURE() << "'" << bad << "' was accepted";
+    } catch (const KeyPathError& e) {
+      EXPECT_NE(std::string(e.what()).find("key path '" + bad + "'"), std::string::npos) << e.what();
+      EXPECT_EQ(e.path(), bad);
+    }
+  }
+}
+
+TEST(KeyPath, SetsMappingsListElementsAndCreatesKeys) {
+  YAML::Node scene = YAML::LoadFile(TINY_CYLINDER);
+  setKeyPath(scene, "mesh.spacing", YAML::Load("0.05"));
+  setKeyPath(scene, "mpm.update", YAML::Load("musl"));                 // absent in the scene: created
+  setKeyPath(scene, "geometry[wall].particles_per_cell", YAML::Load("4"));
+  setKeyPath(scene, "geometry[0].temperature", YAML::Load("310"));
+  setKeyPath(scene, "coupling.acceleration", YAML::Load("{type: aitken, relaxation: 0.5}"));
+  setKeyPath(scene, "ice.limiter", YAML::Load("minmod"));
+  EXPECT_EQ(scene["mesh"]["spacing"].as<double>(), 0.05);
+  EXPECT_EQ(scene["mesh"]["dim"].as<int>(), 2);  // the rest untouched
+  EXPECT_EQ(scene["mpm"]["update"].as<std::string>(), "musl");
+  EXPECT_EQ(scene["mpm"]["shape_function"].as<std::string>(), "linear");
+  EXPECT_EQ(scene["geometry"][1]["particles_per_cell"].as<int>(), 4);
+  EXPECT_EQ(scene["geometry"][1]["name"].as<std::string>(), "wall");
+  EXPECT_EQ(scene["geometry"][0]["temperature"].as<double>(), 310);
+  EXPECT_EQ(scene["geometry"].size(), 2u);
+  EXPECT_EQ(scene["coupling"]["acceleration"]["type"].as<std::string>(), "aitken");
+  EXPECT_EQ(scene["coupling"]["schedule"].as<std::string>(), "monolithic");
+  EXPECT_EQ(scene["ice"]["limiter"].as<std::string>(), "minmod");
+  // The edited scene is still a valid scene.
+  YAML::Emitter e;
+  e << scene;
+  EXPECT_NO_THROW((void)mpmice::core::parseScene(e.c_str(), "edited.yaml"));
+}
+
+TEST(KeyPath, PathsThatDoNotFitTheSceneNameThePathAndWhatIsThere) {
+  const YAML::Node base = YAML::LoadFile(TINY_CYLINDER);
+  struct Case {
+    std::string path, says;
+  };
+  for (const Case& c : {Case{"geometry[pipe].particles_per_cell", "no element of 'geometry' is named 'pipe' (named: air, wall)"},
+                        Case{"geometry[5].particles_per_cell", "'geometry' has 2 elements; no index 5"},
+                        Case{"mesh[wall].spacing", "'mesh' is a mapping, not a list"},
+                        Case{"mesh.spacing.x", "'mesh.spacing' is a scalar, not a mapping"},
+                        Case{"loads[wall].x", "the scene has no list 'loads'"}}) {
+    YAML::Node scene = YAML::Clone(base);
+    try {
+      setKeyPath(scene, c.path, YAML::Load("1"));
+      ADD_FAILURE() << c.path << " was accepted";
+    } catch (const KeyPathError& e) {
+      EXPECT_NE(std::string(e.what()).find("key path '" + c.path + "'"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(StudyFileTest, ReadsAGridAndAnExplicitList) {
+  Study s = readStudy(write("time_limit: 30\nrepeats: 2\nset: {time.end: 1.0e-5}\naxes:\n  mesh.spacing: [0.1, 0.05]\n"
+                            "  geometry[wall].particles_per_cell: [2, 3, 4]\n"));
+  EXPECT_EQ(s.name, "s");
+  EXPECT_EQ(s.program, Program::Mpmice);
+  EXPECT_EQ(s.timeLimit, 30);
+  EXPECT_EQ(s.repeats, 2);
+  EXPECT_EQ(s.points.size(), 6u);
+  EXPECT_EQ(s.columns, (std::vector<std::string>{"mesh.spacing", "geometry[wall].particles_per_cell"}));
+  const YAML::Node v = variantScene(s, YAML::LoadFile(TINY_CYLINDER), s.points[5], "/tmp/run5");
+  EXPECT_EQ(v["mesh"]["spacing"].as<double>(), 0.05);
+  EXPECT_EQ(v["geometry"][1]["particles_per_cell"].as<int>(), 4);
+  EXPECT_EQ(v["time"]["end"].as<double>(), 1.0e-5);
+  EXPECT_EQ(v["output"]["directory"].as<std::string>(), "/tmp/run5");
+
+  s = readStudy(write("study: pts\nprogram: coupler_run\npoints:\n  - {mpm.shape_function: bspline2}\n"
+                      "  - {coupling.schedule: explicit_parallel, coupling.ranks.mpm: 2}\n"));
+  EXPECT_EQ(s.name, "pts");
+  EXPECT_EQ(s.program, Program::CouplerRun);
+  ASSERT_EQ(s.points.size(), 2u);
+  EXPECT_EQ(s.columns, (std::vector<std::string>{"mpm.shape_function", "coupling.schedule", "coupling.ranks.mpm"}));
+  StudyOptions o;
+  o.binDir = "/b";
+  EXPECT_EQ(pointCommand(s, s.points[1], "x.yaml", o),
+            (std::vector<std::string>{"/b/coupler/coupler", "run", "--bin-dir", "/b", "x.yaml"}));
+}
+
+TEST_F(StudyFileTest, RanksRunMpmiceUnderTheLaunchHelper) {
+  const Study s = readStudy(write("axes: {ranks: [1, 2]}\n"));
+  StudyOptions o;
+  o.binDir = "/b";
+  o.mpirun = "/s/mpirun";
+  EXPECT_EQ(pointCommand(s, s.points[0], "x.yaml", o), (std::vector<std::string>{"/b/coupler/mpmice", "x.yaml"}));
+  EXPECT_EQ(pointCommand(s, s.points[1], "x.yaml", o),
+            (std::vector<std::string>{"/s/mpirun", "-np", "2", "/b/coupler/mpmice", "x.yaml"}));
+}
+
+TEST_F(StudyFileTest, ABadKeyPathIsAnErrorNamingTheKeyAndTheStudyFile) {
+  const std::string f = write("axes:\n  geometry[pipe].particles_per_cell: [2, 4]\n");
+  const std::string e = errorOf(f);
+  EXPECT_NE(e.find(f), std::string::npos) << e;
+  EXPECT_NE(e.find("geometry[pipe].particles_per_cell"), std::string::npos) << e;
+  EXPECT_NE(e.find("named: air, wall"), std::string::npos) << e;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));  // nothing created
+  // A syntax error is found when the file is read.
+  const std::string g = write("axes:\n  mesh..spacing: [0.1]\n");
+  const std::string e2 = errorOf(g);
+  EXPECT_NE(e2.find(g), std::string::npos) << e2;
+  EXPECT_NE(e2.find("mesh..spacing"), std::string::npos) << e2;
+}
+
+TEST_F(StudyFileTest, AKeyTheSceneDoesNotKnowIsAnErrorNamingTheKeyAndTheStudyFile) {
+  const std::string f = write("axes:\n  mpm.shape_functon: [linear]\n");
+  const std::string e = errorOf(f);
+  EXPECT_NE(e.find(f), std::string::npos) << e;
+  EXPECT_NE(e.find("mpm.shape_functon"), std::string::npos) << e;
+  EXPECT_NE(e.find("invalid scene"), std::string::npos) << e;
+  // A value the scene refuses: the point and its settings are named.
+  const std::string g = write("axes:\n  mpm.shape_function: [linear, quartic]\n");
+  const std::string e2 = errorOf(g);
+  EXPECT_NE(e2.find(g + ": point 2 (mpm.shape_function: quartic)"), std::string::npos) << e2;
+}
+
+TEST_F(StudyFileTest, BadInputNamesTheFileAndTheKey) {
+  const std::string head = "scene: " + std::string(TINY_CYLINDER) + "\n";
+  struct Case {
+    std::string body, key, says;
+  };
+  for (const Case& c : {
+           Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: [0.1]}\ncolour: red\n", "'colour'", "unknown key"},
+           Case{head + "reference: piston_exact\naxes: {mesh.spacing: [0.1]}\n", "'reference'", "valid: lame_cylinder"},
+           Case{head + "axes: {mesh.spacing: [0.1]}\n", "'reference'", "required"},
+           Case{"reference: lame_cylinder\naxes: {mesh.spacing: [0.1]}\n", "'scene'", "required"},
+           Case{"scene: nowhere.yaml\nreference: lame_cylinder\naxes: {mesh.spacing: [0.1]}\n", "'scene'", "no scene file"},
+           Case{head + "reference: lame_cylinder\nprogram: mpirun\naxes: {mesh.spacing: [0.1]}\n", "'program'", "valid: mpmice, coupler_run"},
+           Case{head + "reference: lame_cylinder\ntime_limit: 0\naxes: {mesh.spacing: [0.1]}\n", "'time_limit'", "> 0"},
+           Case{head + "reference: lame_cylinder\nrepeats: 0\naxes: {mesh.spacing: [0.1]}\n", "'repeats'", ">= 1"},
+           Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: []}\n", "'axes.mesh.spacing'", "non-empty list"},
+           Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: 0.1}\n", "'axes.mesh.spacing'", "non-empty list"},
+           Case{head + "reference: lame_cylinder\n", "'axes'", "required"},
+           Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: [0.1]}\npoints: [{mesh.spacing: 0.1}]\n", "'points'", "not both"},
+           Case{head + "reference: lame_cylinder\nprogram: coupler_run\naxes: {ranks: [1, 2]}\n", "'ranks'", "coupling.ranks.mpm"},
+           Case{head + "reference: lame_cylinder\naxes: {ranks: [0]}\n", "'ranks'", ">= 1"},
+       }) {
+    const std::string f = write(c.body, "# a bad study\n");
+    try {
+      (void)readStudy(f);
+      ADD_FAILURE() << "accepted:\n" << c.body;
+    } catch (const StudyError& e) {
+      const std::string w = e.what();
+      EXPECT_EQ(w.rfind(f + ": ", 0), 0u) << w;
+      EXPECT_NE(w.find(c.key), std::string::npos) << w;
+      EXPECT_NE(w.find(c.says), std::string::npos) << w;
+    }
+  }
+}
+
+TEST(RunLog, ClosingLinesGiveStepsAndIterations) {
+  const std::string mpmice =
+      "step 100 t = ...\ncoupling: schedule implicit_serial, 1234 iterations in 617 steps (2.0000 per step), 0 steps "
+      "accepted unconverged\ndone: 617 steps, t = 4.000e-03 s, wall 9.9 s\n";
+  RunCounts c = parseRunLog(mpmice);
+  EXPECT_EQ(c.steps, 617);
+  EXPECT_DOUBLE_EQ(c.iterationsPerStep, 2.0);
+  c = parseRunLog("done: 42 steps, t = 1.0e-3 s, wall 1 s\n");
+  EXPECT_EQ(c.steps, 42);
+  EXPECT_EQ(c.iterationsPerStep, -1);
+  c = parseRunLog("mpmice: error: the scene is broken\n");
+  EXPECT_EQ(c.steps, -1);
+}
+
+TEST(RunLog, AResultReadsBack) {
+  PointResult r;
+  r.status = "ok";
+  r.exitCode = 0;
+  r.wallSeconds = 2.5;
+  r.walls = {2.4, 2.5, 3.1};
+  r.peakRssMb = 31.25;
+  r.steps = 99;
+  r.iterationsPerStep = 1.5;
+  r.error = 0.0843125;
+  r.note = "a: b, c";
+  const fs::path f = fs::temp_directory_path() / ("test_study_result_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(f) << resultYaml(r);
+  const PointResult b = readResult(f.string());
+  fs::remove(f);
+  EXPECT_EQ(b.status, "ok");
+  EXPECT_EQ(b.walls, r.walls);
+  EXPECT_EQ(b.steps, 99);
+  EXPECT_DOUBLE_EQ(b.error, 0.0843125);
+  EXPECT_DOUBLE_EQ(b.iterationsPerStep, 1.5);
+  EXPECT_EQ(b.note, r.note);
+  r.error = NAN;
+  r.status = "failed";
+  std::ofstream(f) << resultYaml(r);
+  EXPECT_TRUE(std::isnan(readResult(f.string()).error));
+  fs::remove(f);
+}
+
+TEST(Pareto, FrontIsTheUndominatedPointsFastestFirst) {
+  const std::vector<TradePoint> pts{{"a", 10, 0.05}, {"b", 1, 0.2}, {"c", 2, 0.3}, {"d", 5, 0.1},
+                                    {"e", 20, 0.06}, {"f", 3, NAN}, {"g", 0, 0.01}, {"h", 5, 0.08}};
+  EXPECT_EQ(paretoFront(pts), (std::vector<std::size_t>{1, 7, 0}));  // b, h (beats d at equal wall), a
+}
+
+TEST(References, RegistryByNameAndTheValidChoices) {
+  EXPECT_EQ(findReference("lame_cylinder").name, "lame_cylinder");
+  EXPECT_EQ(referenceNames(), "lame_cylinder");
+  try {
+    (void)findReference("flap_reference_curve");
+    FAIL() << "an unknown reference was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'flap_reference_curve' is not a reference (valid: lame_cylinder)"),
+              std::string::npos) << e.what();
+  }
+}
