@@ -21,8 +21,7 @@ void IceSolver::exchange() {
   const double V = mesh_.cellVolume();
   const double dtV = dt_ * V;
   for (MaterialState& m : st_.mat) {
-    m.dMom.fill(0.0);
-    m.dEnergy.fill(0.0);
+    m.dMom.fill(0.0);  // dEnergy holds the Lagrangian phase's share already; the heat is added
   }
   if (nm < 2 || (!anyK_ && !anyH_)) return;
   struct Ptr {
@@ -71,7 +70,7 @@ void IceSolver::exchange() {
           if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
         }
         Q.eL[c] += de;
-        if (Q.external) Q.dE[o] = mass[r] * de;
+        if (Q.external) Q.dE[o] += mass[r] * de;
       }
     }
     if (anyH_) {
