@@ -7,7 +7,11 @@
 // (mass ~1e-10 of the cell's) would take all of it, +|du|^2/2 per unit mass each step, and its
 // specific volume, hence du = dt v grad p, grows with its temperature: a runaway (the seed
 // cylinder's wall, docs/coupling.md). Uintah's exchange converts none of D to internal energy.
-// The increments of external materials are kept for the coupler.
+// With external materials D is reduced by the kinetic energy the Lagrangian phase gave the fluids
+// and left to be paid here (IceState::kineticLagrangian): the gas a solid's pressure jump
+// accelerates and the drag stops in the same step gets its energy back instead of heating the
+// solid (docs/coupling.md "Energy budget"). The increments of external materials are kept for the
+// coupler (their energy adds to their share of the Lagrangian phase's correction).
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/solver/ice_solver.h"
 
@@ -53,7 +57,9 @@ void IceSolver::exchange() {
       }
       exchangeCouplings(nm, dtV, K_.data(), th, w);
       pointwiseExchange(nm, s, w, x, dim);
-      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
+      // Kinetic energy the drag dissipates [J], less what the Lagrangian phase gave the fluids and
+      // left to be paid here (lagrangian_phase.cpp); heat capacity m cv [J/K].
+      double D = -st_.kineticLagrangian.data()[c], C = 0;
       for (int r = 0; r < nm; ++r) {
         for (int d = 0; d < dim; ++d) {
           const double un = x[d * nm + r], uo = x0[d * nm + r];

@@ -26,6 +26,12 @@ void IceSolver::computeSourcesAndLagrangian() {
   const double V = mesh_.cellVolume();
   const double dt = dt_;
   const bool fix = true;
+  // With solids and momentum exchange, the kinetic energy the pressure gradient gives the fluids
+  // here is paid in the exchange (out of the drag heat), not here: at a solid's surface the gas
+  // is accelerated by the pressure jump the solid holds and stopped again by the exchange in the
+  // same step; paid here out of the gas's internal energy and returned as drag heat shared by heat
+  // capacity, it would move the gas's energy into the (heavy) solid every step.
+  const bool defer = anyExternal_ && anyK_;
   for (MaterialState& m : st_.mat) m.dEnergy.fill(0.0);  // an external share is added below
   const core::Box& sb = st_.press.box();
   struct Ptr {
@@ -92,8 +98,9 @@ void IceSolver::computeSourcesAndLagrangian() {
       dKE += 0.5 * mass * (ke1 - ke0);
       dIE += mass * de;
     }
+    st_.kineticLagrangian.data()[c] = defer ? dKE : 0.0;
     if (fix && kbar > 0) {
-      const double D = dEflux - dKE - dIE - dWork;
+      const double D = dEflux - (defer ? 0.0 : dKE) - dIE - dWork;
       for (const Ptr& P : ptr) {
         const double share = (P.th[c] * P.ka[c] / kbar) * D;  // [J]
         if (P.external) {

@@ -29,6 +29,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
   dp = cell("pressure_increment", 1);
   iters = cell("pressure_iterations", 1);
   divU = cell("velocity_divergence", 1);
+  kineticLagrangian = cell("kinetic_energy_L", 1);
   for (int d = 0; d < 3; ++d) {
     pressFace[d] = Field("face_pressure", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
     volFlux[d] = Field("face_volume_flux", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);

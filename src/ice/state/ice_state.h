@@ -47,6 +47,9 @@ struct IceState {
   core::Field divU;       // div(sum_r theta_r u_f,r) per cell
   std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded)
   std::array<core::Field, 3> pressFace;
+  /// Per cell: the kinetic energy the fluids gained in the Lagrangian phase, paid in the exchange
+  /// (with external materials and momentum exchange; see lagrangian_phase.cpp).
+  core::Field kineticLagrangian;
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`.
   void allocate(const core::Box& owned, const core::Box& stored, int dim);
