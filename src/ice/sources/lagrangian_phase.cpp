@@ -26,11 +26,11 @@ void IceSolver::computeSourcesAndLagrangian() {
   const double V = mesh_.cellVolume();
   const double dt = dt_;
   const bool fix = true;
-  // With solids and momentum exchange, the kinetic energy the pressure gradient gives the fluids
-  // here is paid in the exchange (out of the drag heat), not here: at a solid's surface the gas
-  // is accelerated by the pressure jump the solid holds and stopped again by the exchange in the
-  // same step; paid here out of the gas's internal energy and returned as drag heat shared by heat
-  // capacity, it would move the gas's energy into the (heavy) solid every step.
+  // With solids and momentum exchange, the kinetic energy the pressure gradient gives each fluid
+  // here is paid in the exchange (exchange_phase.cpp), not here: at a solid's surface the gas is
+  // accelerated by the pressure jump the solid holds and stopped again by the exchange in the
+  // same step; paid here out of the cell's internal energies and returned as drag heat shared by
+  // heat capacity, it would move the gas's energy into the (heavy) solid every step.
   const bool defer = anyExternal_ && anyK_;
   for (MaterialState& m : st_.mat) m.dEnergy.fill(0.0);  // an external share is added below
   const core::Box& sb = st_.press.box();
@@ -96,9 +96,9 @@ void IceSolver::computeSourcesAndLagrangian() {
         continue;
       }
       dKE += 0.5 * mass * (ke1 - ke0);
+      P.state->kineticL.data()[c] = defer ? 0.5 * mass * (ke1 - ke0) : 0.0;
       dIE += mass * de;
     }
-    st_.kineticLagrangian.data()[c] = defer ? dKE : 0.0;
     if (fix && kbar > 0) {
       const double D = dEflux - (defer ? 0.0 : dKE) - dIE - dWork;
       for (const Ptr& P : ptr) {

@@ -36,6 +36,8 @@ struct MaterialState {
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction
   core::Field dMom, dEnergy;          // exchange increments (external materials; owned cells)
   core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)
+  core::Field kineticL;               // kinetic energy [J] a fluid gained in the Lagrangian phase and
+                                      // pays in the exchange (with external materials and K > 0)
 };
 
 struct IceState {
@@ -47,9 +49,6 @@ struct IceState {
   core::Field divU;       // div(sum_r theta_r u_f,r) per cell
   std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded)
   std::array<core::Field, 3> pressFace;
-  /// Per cell: the kinetic energy the fluids gained in the Lagrangian phase, paid in the exchange
-  /// (with external materials and momentum exchange; see lagrangian_phase.cpp).
-  core::Field kineticLagrangian;
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`.
   void allocate(const core::Box& owned, const core::Box& stored, int dim);
