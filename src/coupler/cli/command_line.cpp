@@ -54,7 +54,8 @@ std::string usage() {
          "  coupler --help\n";
 }
 
-int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                   const StartupChecks& checks) {
   if (args.empty()) {
     err << "coupler: no command given\n\n" << usage();
     return 2;
@@ -69,7 +70,7 @@ int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std:
     return 0;
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (command == "check") return runCheck(rest, out, err);
+  if (command == "check") return runCheck(rest, out, err, checks);
   if (command == "run") return runRun(rest, out, err);
   err << "coupler: unknown command '" << command << "'"
       << core::scene_detail::didYouMean(command, {"check", "run", "help"}) << "\n\n"

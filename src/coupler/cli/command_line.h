@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "coupler/cli/check_command.h"
+
 namespace CLI {
 class App;
 }
@@ -22,8 +24,10 @@ namespace mpmice::coupler {
 std::optional<int> parseSubcommand(CLI::App& app, const std::vector<std::string>& args, const std::string& command,
                                    const std::string& usageLine, std::ostream& out, std::ostream& err);
 
-/// Runs the command line `args` (without the program name); returns the exit status.
-int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// Runs the command line `args` (without the program name); returns the exit status. `checks`:
+/// the programs' start-up validation that `coupler check` runs (check_command.h).
+int runCommandLine(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                   const StartupChecks& checks = {});
 
 /// The usage text.
 std::string usage();

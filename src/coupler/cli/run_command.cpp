@@ -64,6 +64,7 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
     const std::string solver = scene.coupling.interface.openfoam_solver;
     const std::string mpm = locateProgram("mpm_solver", binDir, ownDirectory());
     plan.programs = {"mpm_solver", solver};
+    plan.participants = {"mpm", "openfoam"};
     plan.ranks = {mpmRanks, 1};
     plan.executables = {mpm};
     plan.argv = {mpirun, "-x", "WM_PROJECT_DIR", "-np", std::to_string(mpmRanks), mpm, sceneFile,
@@ -73,12 +74,15 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
   // A scene of one kind of material needs one program (the other would have nothing to solve).
   if (scene.fluids().empty()) {
     plan.programs = {"mpm_solver"};
+    plan.participants = {"mpm"};
     plan.ranks = {mpmRanks};
   } else if (scene.solids().empty()) {
     plan.programs = {"ice_solver"};
+    plan.participants = {"ice"};
     plan.ranks = {iceRanks};
   } else {
     plan.programs = {"mpm_solver", "ice_solver"};
+    plan.participants = {"mpm", "ice"};
     plan.ranks = {mpmRanks, iceRanks};
   }
   plan.argv = {mpirun};
@@ -101,21 +105,35 @@ std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::strin
     for (std::sregex_iterator it(text.begin(), text.end(), re), end; it != end; ++it)
       ranks.insert(std::stoi((*it)[1]));
   std::vector<std::string> lines;
+  std::string stopped;  // the closing line when a side timed out waiting for its peer
   // The side that failed says so itself ("ice_solver: error: ..."): name it first, with its
   // message (mpirun's own report of which rank aborted is racy and may be missing).
+  static const std::regex timedOut(R"(from participant '([^']+)' within ([^ ]+) s \(coupling\.timeout\); it has stopped or hangs)");
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);)
-    for (const auto& program : plan.programs) {
+    for (std::size_t p = 0; p < plan.programs.size(); ++p) {
+      const std::string& program = plan.programs[p];
       const std::string tag = program + ": error: ";
       if (const auto at = line.find(tag); at != std::string::npos) {  // another program's output may precede it
-        const std::string failed = "coupler: " + program + " failed: " + line.substr(at + tag.size());
+        const std::string message = line.substr(at + tag.size());
+        const std::string failed = "coupler: " + program + " failed: " + message;
         if (std::find(lines.begin(), lines.end(), failed) == lines.end()) lines.push_back(failed);
+        std::smatch m;
+        if (!stopped.empty() || !std::regex_search(message, m, timedOut)) continue;
+        // The healthy side timed out: the participant it waited for is the one that stopped.
+        const auto peer = std::find(plan.participants.begin(), plan.participants.end(), m[1].str());
+        const std::string who = peer == plan.participants.end()
+                                    ? "participant '" + m[1].str() + "'"
+                                    : plan.programs[static_cast<std::size_t>(peer - plan.participants.begin())];
+        stopped = "coupler: " + who + " stopped answering: " + program + " waited " + m[2].str() +
+                  " s (coupling.timeout) for it; the launch was ended";
       }
     }
   for (int r : ranks) {
     const std::string who = plan.describeWorldRank(r);
     if (!who.empty()) lines.push_back("coupler: world rank " + std::to_string(r) + " is " + who);
   }
+  if (!stopped.empty()) lines.push_back(stopped);  // the closing line names who stopped answering
   return lines;
 }
 

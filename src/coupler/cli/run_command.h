@@ -29,6 +29,7 @@ namespace mpmice::coupler {
 struct LaunchPlan {
   std::vector<std::string> argv;        // the full command line
   std::vector<std::string> programs;    // program name per participant, in launch order
+  std::vector<std::string> participants;  // participant name per program ("mpm", "ice", "openfoam")
   std::vector<int> ranks;               // ranks per participant
   std::vector<std::string> executables; // per participant (checked before the launch)
   [[nodiscard]] std::string commandLine() const;
@@ -49,7 +50,9 @@ std::string runUsage();
 /// Runs `coupler run` on args (after "run"); returns the exit status.
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
-/// Explains the world ranks that mpirun's failure text mentions (one line each).
+/// Explains the world ranks that mpirun's failure text mentions (one line each). When the side
+/// that failed timed out waiting for its peer ("... from participant 'ice' within 3 s ..."), the
+/// last line names the peer's program as the one that stopped answering.
 std::vector<std::string> explainFailure(const LaunchPlan& plan, const std::string& launchOutput);
 
 }  // namespace mpmice::coupler

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "coupler/launch/startup_watchdog.h"
+#include "coupler/launch/launch_watchdog.h"
 #include "coupler/launch/timed_wait.h"
 
 namespace mpmice::coupler {
@@ -27,14 +27,22 @@ Participant::~Participant() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (finalized) return;
+  if (inter_ != MPI_COMM_NULL) LaunchWatchdog::ending();  // the coupled run is over: bound the exit
   if (inter_ != MPI_COMM_NULL) MPI_Comm_free(&inter_);
   if (localRaw_ != MPI_COMM_NULL) MPI_Comm_free(&localRaw_);
 }
 
 Participant Participant::join(const core::Comm& world, const std::string& name, double timeout) {
   maybeStallAtStart(name);
-  // The collectives below wait without a bound of their own: the watchdog bounds them.
-  const StartupWatchdog watchdog(name == "mpm" ? "mpm_solver" : name == "ice" ? "ice_solver" : name, timeout);
+  // The collectives below wait without a bound of their own: the watchdog bounds them, and once
+  // the launch is joined every later phase (launch_watchdog.h).
+  LaunchWatchdog::start(name == "mpm" ? "mpm_solver" : name == "ice" ? "ice_solver" : name, timeout);
+  struct StopUnlessJoined {  // uncoupled, or a join that failed with its own error
+    bool joined = false;
+    ~StopUnlessJoined() {
+      if (!joined) LaunchWatchdog::stop();
+    }
+  } guard;
   Participant p;
   p.name_ = name;
   p.timeout_ = timeout;
@@ -76,6 +84,8 @@ Participant Participant::join(const core::Comm& world, const std::string& name, 
   if (p.peerName_ == name)
     throw std::runtime_error("coupler: both programs of the launch are '" + name +
                              "'; couple two different participants (e.g. mpm_solver and ice_solver)");
+  LaunchWatchdog::joined();
+  guard.joined = true;
   return p;
 }
 

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <thread>
 
+#include "coupler/launch/launch_watchdog.h"
+
 namespace mpmice::coupler {
 
 std::string timeoutMessage(const std::string& peer, const std::string& what, double timeout, Waiting waiting) {
@@ -23,6 +25,7 @@ void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& 
   for (;;) {
     int done = 0;
     MPI_Testall(static_cast<int>(reqs.size()), reqs.data(), &done, MPI_STATUSES_IGNORE);
+    LaunchWatchdog::beat();  // waiting within a bound is progress (the bound names the peer)
     if (done) return;
     const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (waited > timeout) {

@@ -8,34 +8,10 @@
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/solver/initial_regions.h"
+#include "ice/solver/startup_check.h"
 
 namespace mpmice::ice {
-
-namespace {
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-[[noreturn]] void bad(const core::SourceLoc& where, const std::string& msg) {
-  throw std::invalid_argument((where.line ? where.str() + ": " : std::string()) + msg);
-}
-
-/// Material density and specific energy of material `eos` from a state (pressure, temperature,
-/// optional density).
-void resolveState(const Eos& eos, double p, double T, std::optional<double> rho, double* rhoOut, double* eOut) {
-  if (rho) {
-    *rhoOut = *rho;
-    *eOut = eos.internalEnergy(*rho, p);
-  } else {
-    *rhoOut = eos.densityFromPT(p, T);
-    *eOut = eos.energyFromTemperature(*rhoOut, T);
-  }
-}
-
-}  // namespace
 
 void IceSolver::initialize(const core::Scene& scene) {
   const int dim = mesh_.dim();
@@ -89,11 +65,7 @@ void IceSolver::initialize(const core::Scene& scene) {
     m.name = ms.name;
     m.external = ms.kind == core::MaterialKind::Solid;
     if (!m.external && firstFluid < 0) firstFluid = r;
-    try {
-      m.eos = makeEos(ms.eos, ms.specific_heat);
-    } catch (const std::exception& e) {
-      bad(ms.eos.where, "materials." + ms.name + ".eos: " + e.what());
-    }
+    m.eos = makeMaterialEos(ms);
     m.viscosity = ms.viscosity;
     m.conductivity = ms.thermal_conductivity;
     anyExternal_ |= m.external;
@@ -122,73 +94,18 @@ void IceSolver::initialize(const core::Scene& scene) {
   }
 
   // ---- regions: validate, then each material's background state (first region that fills it)
-  struct Bg {
-    bool set = false;
-    double rho = 1, e = 1;
-  };
-  std::vector<Bg> bg(static_cast<std::size_t>(nm));
-  std::vector<const core::RegionSpec*> fluidRegions, solidRegions;
-  for (const core::RegionSpec& reg : scene.geometry) {
-    if (reg.fill.empty()) bad(reg.where, "geometry." + reg.name + ".fill: no material");
-    double sum = 0;
-    bool fluid = false;
-    for (const core::FillSpec& f : reg.fill) {
-      const int r = scene.materialIndex(f.material);
-      if (r < 0) bad(reg.where, "geometry." + reg.name + ".fill: unknown material '" + f.material + "'");
-      if (f.volume_fraction < 0 || f.volume_fraction > 1)
-        bad(reg.where, "geometry." + reg.name + ".fill." + f.material + ".volume_fraction = " + num(f.volume_fraction) +
-                           " must lie in [0, 1]");
-      sum += f.volume_fraction;
-      fluid |= !st_.mat[r].external;
-    }
-    if (!fluid) {
-      solidRegions.push_back(&reg);
-      continue;
-    }
-    if (std::abs(sum - 1.0) > 1e-9)
-      bad(reg.where, "geometry." + reg.name + ".fill: volume fractions sum to " + num(sum) +
-                         "; they must sum to 1 (fix the volume_fraction values)");
-    if (!reg.pressure) bad(reg.where, "geometry." + reg.name + ".pressure: required for fluid regions");
-    if (!(*reg.pressure > 0))
-      bad(reg.where, "geometry." + reg.name + ".pressure = " + num(*reg.pressure) + " must be > 0");
-    if (reg.density && !(*reg.density > 0))
-      bad(reg.where, "geometry." + reg.name + ".density = " + num(*reg.density) + " must be > 0");
-    if (!(reg.temperature > 0))
-      bad(reg.where, "geometry." + reg.name + ".temperature = " + num(reg.temperature) + " must be > 0");
-    for (const core::FillSpec& f : reg.fill) {
-      const int r = scene.materialIndex(f.material);
-      if (st_.mat[r].external || bg[r].set) continue;
-      resolveState(*st_.mat[r].eos, *reg.pressure, reg.temperature, reg.density, &bg[r].rho, &bg[r].e);
-      if (!(bg[r].rho > 0) || !std::isfinite(bg[r].e))
-        bad(reg.where, "geometry." + reg.name + ": material '" + f.material + "' has no valid state at p = " +
-                           num(*reg.pressure) + ", T = " + num(reg.temperature));
-      bg[r].set = true;
-    }
-    fluidRegions.push_back(&reg);
-  }
-  for (int r = 0; r < nm; ++r)
-    if (!st_.mat[r].external && !bg[r].set) {  // never placed: an absent material at 1 atm, 300 K
-      bg[r].rho = st_.mat[r].eos->densityFromPT(kReferencePressure, kReferenceTemperature);
-      bg[r].e = st_.mat[r].eos->energyFromTemperature(bg[r].rho, kReferenceTemperature);
-      bg[r].set = bg[r].rho > 0;
-    }
+  const RegionPlan plan = planRegions(scene, eos);
+  const std::vector<BackgroundState>& bg = plan.background;
 
   // ---- the initial state, cell by cell (later regions override earlier ones)
   const double V = mesh_.cellVolume();
   forEach(owned_, [&](int i, int j, int k) {
     const core::RealVect x{mesh_.cellCenter(0, i), dim > 1 ? mesh_.cellCenter(1, j) : 0.0,
                            dim > 2 ? mesh_.cellCenter(2, k) : 0.0};
-    const core::RegionSpec* reg = nullptr;
-    for (const core::RegionSpec* rg : fluidRegions)
-      if (rg->shape.contains(x, dim)) reg = rg;
-    // Cells whose centre lies in a solid object (declared after the fluid region) hold no fluid:
-    // the solid's mass arrives through setExternalMaterialState.
-    bool inSolid = false;
-    for (const core::RegionSpec* rg : solidRegions)
-      if (rg->shape.contains(x, dim) && (!reg || rg > reg)) inSolid = true;
-    if (!reg && !inSolid && firstFluid >= 0)
-      throw std::invalid_argument("geometry: cell " + std::to_string(i) + "," + std::to_string(j) + "," +
-                                  std::to_string(k) + " is covered by no fluid region (add a background region)");
+    const CellCover cover = coverAt(plan, x, dim);
+    requireCovered(plan, cover, i, j, k);
+    const core::RegionSpec* reg = cover.fluid;
+    const bool inSolid = cover.inSolid;
 
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
@@ -214,7 +131,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       m.spvol(i, j, k) = 1.0 / rho;
       m.theta(i, j, k) = frac;
     }
-    st_.press(i, j, k) = reg ? *reg->pressure : fluidRegions.empty() ? kReferencePressure : *fluidRegions.front()->pressure;
+    st_.press(i, j, k) = reg ? *reg->pressure : plan.fluid.empty() ? kReferencePressure : *plan.fluid.front()->pressure;
     initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 
@@ -225,10 +142,10 @@ void IceSolver::initialize(const core::Scene& scene) {
     InflowState& in = inflow_[s];
     in.material = b.material.empty() ? firstFluid : scene.materialIndex(b.material);
     if (in.material < 0 || st_.mat[in.material].external)
-      bad(b.where, std::string("boundary.") + core::boundaryFaceName(s) + ".material: '" + b.material +
+      badInput(b.where, std::string("boundary.") + core::boundaryFaceName(s) + ".material: '" + b.material +
                        "' is not a fluid of the scene");
     if (!b.density && !b.pressure)
-      bad(b.where, std::string("boundary.") + core::boundaryFaceName(s) + ": inflow needs a density or a pressure");
+      badInput(b.where, std::string("boundary.") + core::boundaryFaceName(s) + ": inflow needs a density or a pressure");
     const Eos& e = *st_.mat[in.material].eos;
     in.velocity = b.velocity;
     in.fixedPressure = b.pressure.has_value();
@@ -251,7 +168,7 @@ void IceSolver::initialize(const core::Scene& scene) {
   for (const core::SourceSpec& s : scene.sources) {
     Source src{scene.materialIndex(s.material), s.power_density, s.start, s.end, {}};
     if (src.material < 0 || st_.mat[src.material].external)
-      bad(s.where, "sources: '" + s.material + "' is not a fluid of the scene");
+      badInput(s.where, "sources: '" + s.material + "' is not a fluid of the scene");
     forEach(owned_, [&](int i, int j, int k) {
       const core::RealVect x{mesh_.cellCenter(0, i), dim > 1 ? mesh_.cellCenter(1, j) : 0.0,
                              dim > 2 ? mesh_.cellCenter(2, k) : 0.0};

@@ -1,8 +1,11 @@
 #include "mpm/material/constitutive_model.h"
 
+#include <cmath>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 
+#include "core/scene/model_catalog.h"
 #include "mpm/material/j2_plasticity.h"
 #include "mpm/material/linear_elastic.h"
 #include "mpm/material/neo_hookean.h"
@@ -39,6 +42,19 @@ ElasticConstants ElasticConstants::fromSpec(const core::ModelSpec& spec, const s
   if (!(c.K > 0) || !(c.G > 0))
     throw std::invalid_argument(what + ": bulk and shear moduli must be > 0 (got K = " +
                                 std::to_string(c.K) + ", G = " + std::to_string(c.G) + ")");
+  // The constants the models and the scene derive from K and G must exist as numbers too: moduli
+  // near the largest double overflow them (K = 1e308 gives E = inf / inf).
+  double E = 0, nu = 0;
+  core::scene_detail::elasticFromBulkShear(c.K, c.G, E, nu);
+  const double derived[4] = {E, nu, c.lambda(), c.K + 4.0 * c.G / 3.0};
+  const char* names[4] = {"Young's modulus", "Poisson's ratio", "Lame's first parameter", "P-wave modulus K + 4G/3"};
+  for (int d = 0; d < 4; ++d)
+    if (!std::isfinite(derived[d])) {
+      std::ostringstream os;
+      os << what << ": the elastic constants K = " << c.K << " Pa, G = " << c.G << " Pa give a " << names[d]
+         << " of " << derived[d] << "; expected finite elastic constants (moduli in Pa, far below 1e308)";
+      throw std::invalid_argument(os.str());
+    }
   return c;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/health/health.h"
 #include "mpm/solver/kernels.h"
+#include "mpm/solver/startup_check.h"
 
 namespace mpmice::mpm {
 
@@ -28,15 +29,8 @@ std::string num(double v) {
 MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsFn contains)
     : scene_(scene), comm_(comm), collapse_(scene.time.dt_collapse_fraction) {
   const core::Mesh& mesh = scene_.mesh;
-  // 1. Options, each checked with the scene key it came from.
-  if (!(scene_.time.cfl > 0 && scene_.time.cfl <= 1.0))
-    throw std::invalid_argument("time.cfl: the CFL number must lie in (0, 1] for explicit MPM, got " +
-                                num(scene_.time.cfl) + "; use e.g. 0.4");
-  if (!(scene_.mpm.flip >= 0 && scene_.mpm.flip <= 1))
-    throw std::invalid_argument("mpm.flip: must lie in [0, 1] (1 = FLIP, 0 = PIC), got " +
-                                num(scene_.mpm.flip));
-  if (!(scene_.mpm.damping >= 0))
-    throw std::invalid_argument("mpm.damping: must be >= 0 [1/s], got " + num(scene_.mpm.damping));
+  // 1. Options, each checked with the scene key it came from (startup_check.h).
+  checkOptions(scene_);
   shape_ = parseShapeFunction(scene_.mpm.shape_function);
   scheme_ = &parseUpdateScheme(scene_.mpm.update);
   flip_ = scene_.mpm.flip;
@@ -49,47 +43,24 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   grid_ = std::make_unique<Grid>(decomp_, comm_, wide);
   bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
   // 3. Constitutive models of the solids.
-  models_.resize(scene_.materials.size());
-  for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
-    const auto& mat = scene_.materials[m];
-    if (mat.kind != core::MaterialKind::Solid) continue;
-    if (!(mat.density > 0))
-      throw std::invalid_argument("materials." + mat.name + ".density: a solid needs a density > 0, got " +
-                                  num(mat.density) + "; give the reference density in kg/m^3");
-    models_[m] = createConstitutiveModel(mat.constitutive, "materials." + mat.name + ".constitutive");
-  }
+  models_ = createSolidModels(scene_);
   // 4. Particles of the cells this rank owns, their loads, then sorted by (material, cell).
   if (!contains)
     contains = [](const core::ShapeSpec& s, const core::RealVect& x, int dim) {
       return s.contains(x, dim);
     };
   generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains);
-  // A solid the scene places but no particle represents (a shape smaller than the particles'
-  // spacing) is an input error, named here rather than found later by the output or the physics.
+  // A solid the scene places but no particle represents is an input error, named here rather
+  // than found later by the output or the physics.
   {
     std::vector<double> count(scene_.materials.size(), 0.0);
     for (std::size_t i = 0; i < p_.size(); ++i) count[static_cast<std::size_t>(p_.material[i])] += 1.0;
     comm_.sumInPlace(count);
-    for (const auto& r : scene_.geometry)
-      for (const auto& f : r.fill) {
-        const int m = scene_.materialIndex(f.material);
-        if (m < 0 || scene_.materials[m].kind != core::MaterialKind::Solid || count[static_cast<std::size_t>(m)] > 0)
-          continue;
-        std::ostringstream os;
-        os << "geometry." << r.name << ": solid '" << f.material << "' yields no particle: its shape holds no "
-           << "particle position of the mesh (cell size / particles_per_cell); enlarge the shape, refine the mesh "
-           << "or raise particles_per_cell";
-        throw std::invalid_argument(os.str());
-      }
+    checkEverySolidHasParticles(scene_, count);
   }
   for (std::size_t l = 0; l < scene_.loads.size(); ++l) {
     const auto& ld = scene_.loads[l];
-    int mat = -1;
-    for (std::size_t m = 0; m < scene_.materials.size(); ++m)
-      if (scene_.materials[m].name == ld.material) mat = static_cast<int>(m);
-    if (mat < 0 || !models_[mat])
-      throw std::invalid_argument("loads[" + std::to_string(l) + "].material: '" + ld.material +
-                                  "' is not a solid material of the scene");
+    const int mat = loadMaterial(scene_, l, models_);
     for (std::size_t i = 0; i < p_.size(); ++i)
       if (p_.material[i] == mat &&
           contains(ld.shape, {p_.x[0][i], p_.x[1][i], p_.x[2][i]}, mesh.dim()))

@@ -7,6 +7,12 @@
 #                      naming the signal, and no mpirun / mpm_solver / ice_solver of it remains.
 # MODE second_run:     a second `coupler run` of the scene into the same output directory is
 #                      refused at start naming the holder (pid, host); a stale lock is taken over.
+# MODE stall_mid_run:  ice_solver sleeps for ever after step 5 (MPMICE_FAULT_STALL; LONG_SCENE with a
+#                      short coupling.timeout): the launch ends non-zero, its closing line names
+#                      ice_solver as the participant that stopped answering, nothing remains.
+# MODE sigstop_mid_run: the same with mpm_solver stopped by SIGSTOP after a second of steps.
+# MODE stall_at_the_end: ice_solver sleeps for ever after its last step (SHORT_SCENE's step count
+#                      given in STALL_STEP): mpm_solver's wait at the end of the run names it.
 set -u
 coupler=$1 bin=$2 scene=$3 long=$4 mode=$5
 work=$(mktemp -d)
@@ -74,5 +80,35 @@ case "$mode" in
     [ $status -eq 0 ] || fail "the run with a stale lock failed ($status)"
     grep -q "note: taking over the stale lock output/pressurized_cylinder.lock of pid $dead" <<<"$out" || fail "no note of the stale lock"
     [ ! -e output/pressurized_cylinder.lock ] || fail "the lock was not released at the end" ;;
+  stall_mid_run|sigstop_mid_run|stall_at_the_end)
+    if [ "$mode" = stall_at_the_end ]; then cp "$scene" "$work/long.yaml"; else long_scene "$work/long.yaml"; fi
+    case "$mode" in
+      stall_mid_run) MPMICE_FAULT_STALL=ice:5 "$coupler" run --bin-dir "$bin" "$work/long.yaml" > log 2>&1 & ;;
+      stall_at_the_end) MPMICE_FAULT_STALL=ice:$STALL_STEP "$coupler" run --bin-dir "$bin" "$work/long.yaml" > log 2>&1 & ;;
+      *) "$coupler" run --bin-dir "$bin" "$work/long.yaml" > log 2>&1 & ;;
+    esac
+    pid=$!
+    stopped=ice_solver healthy=mpm_solver
+    if [ "$mode" = sigstop_mid_run ]; then
+      stopped=mpm_solver healthy=ice_solver  # the program itself (^...), not mpirun naming it
+      for _ in $(seq 100); do victim=$(pgrep -f -- "^[^ ]*/mpm_solver $work/long.yaml"); [ -n "$victim" ] && break; sleep 0.1; done
+      [ -n "$victim" ] || { cat log; fail "the launch did not start"; }
+      for _ in $(seq 200); do grep -q '^step ' log && break; sleep 0.1; done
+      sleep 1
+      kill -STOP $victim
+    fi
+    wait $pid; status=$?
+    grep -v '^\[' log | tail -8
+    echo "exit status: $status"
+    [ $status -ne 0 ] || fail "expected a non-zero exit"
+    [ "$mode" = sigstop_mid_run ] || grep -q "ice: MPMICE_FAULT_STALL: sleeping for ever after step" log || fail "no stall"
+    grep -q "$healthy: error: coupler: .*from participant '${stopped%_solver}' within 3 s (coupling.timeout)" log ||
+      fail "$healthy did not name its peer's timeout"
+    last=$(grep '^coupler: ' log | tail -1)
+    [ "$last" = "coupler: $stopped stopped answering: $healthy waited 3 s (coupling.timeout) for it; the launch was ended" ] ||
+      fail "the closing line does not name $stopped: '$last'"
+    sleep 0.5
+    left=$(pgrep -af -- "$work/long.yaml")
+    [ -z "$left" ] || fail "left running: $left" ;;
 esac
 echo PASS

@@ -32,10 +32,13 @@ functions
 }
 EOD
 
+# The sanitizer build (-DMPMICE_SANITIZE=ON): icoFoam is not instrumented but loads the
+# instrumented bridge, so it runs with the sanitizer runtime preloaded (MPMICE_SANITIZER_PRELOAD).
+foam() { if [ -n "${MPMICE_SANITIZER_PRELOAD:-}" ]; then LD_PRELOAD="$MPMICE_SANITIZER_PRELOAD" "$@"; else "$@"; fi; }
 blockMesh > log.blockMesh 2>&1 || { cat log.blockMesh; exit 1; }
 
 if [ "$mode" = bad ]; then
-  if icoFoam > log.icoFoam 2>&1; then
+  if foam icoFoam > log.icoFoam 2>&1; then
     echo "FAIL: icoFoam exited 0 with an unknown patch name"; tail -n 30 log.icoFoam; exit 1
   fi
   if ! grep -q "noSuchPatch" log.icoFoam || ! grep -q "movingWall" log.icoFoam; then
@@ -46,7 +49,7 @@ if [ "$mode" = bad ]; then
   exit 0
 fi
 
-icoFoam > log.icoFoam 2>&1 || { tail -n 40 log.icoFoam; exit 1; }
+foam icoFoam > log.icoFoam 2>&1 || { tail -n 40 log.icoFoam; exit 1; }
 csv=postProcessing/mpmiceAdapter/forces.csv
 [ -f "$csv" ] || { echo "FAIL: $csv missing"; tail -n 40 log.icoFoam; exit 1; }
 nsteps=$(grep -c '^Time = ' log.icoFoam)

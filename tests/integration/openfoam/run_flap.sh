@@ -11,6 +11,9 @@ set -euo pipefail
 bin="$1"; work="$2"; mode="$3"
 src="$(cd "$(dirname "$0")/../../.." && pwd)"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
+# The sanitizer build (-DMPMICE_SANITIZE=ON): pimpleFoam is not instrumented but loads the
+# instrumented bridge, so the launch runs with the sanitizer runtime preloaded (MPMICE_SANITIZER_PRELOAD).
+foam() { if [ -n "${MPMICE_SANITIZER_PRELOAD:-}" ]; then LD_PRELOAD="$MPMICE_SANITIZER_PRELOAD" "$@"; else "$@"; fi; }
 
 cp -r "$src/configs/flap/fluid-openfoam" case
 sed -i -e 's/^nFlap .*/nFlap 2;/' -e 's/^nHeight .*/nHeight 5;/' -e 's/^nFar .*/nFar 10;/' case/system/blockMeshDict
@@ -35,10 +38,10 @@ if [ -n "$extra" ]; then
 fi
 
 status=0
-"$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" > log.txt 2>&1 || status=$?
+foam "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" > log.txt 2>&1 || status=$?
 if [ "$mode" = two_ranks ] && [ "$status" -eq 0 ]; then
   cp out/flap_openfoam_probes.csv serial_probes.csv
-  "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" --mpm-ranks 2 > log.txt 2>&1 || status=$?
+  foam "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" --mpm-ranks 2 > log.txt 2>&1 || status=$?
 fi
 fail() { echo "FAIL ($mode): $*" >&2; grep -a -v "^GAMG\|^smooth\|^DIC\|^time step\|^Courant" log.txt | tail -40 >&2; exit 1; }
 

@@ -83,6 +83,23 @@ TEST(CoupleRun, ExplainsFailedRanksFromMpirunText) {
   EXPECT_EQ(lines[0], "coupler: world rank 2 is ice_solver rank 1");
 }
 
+TEST(CoupleRun, AParticipantThatStoppedAnsweringIsNamedInTheClosingLine) {
+  // mpm_solver timed out waiting for ice: the closing line names ice_solver (the one that stopped),
+  // not mpm_solver (the healthy peer that reported it and called MPI_Abort).
+  const auto s = tinyScene();
+  const auto plan = coupler::composeLaunch(s, "tiny.yaml", "/b", "mpirun", 1, 1);
+  const std::string text =
+      "mpm_solver: error: coupler: Lagrangian momentum of steel sent, but no receipt from participant 'ice' "
+      "within 3 s (coupling.timeout); it has stopped or hangs\n"
+      "MPI_ABORT was invoked on rank 0 in communicator MPI_COMM_WORLD\n";
+  const auto lines = coupler::explainFailure(plan, text);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].rfind("coupler: mpm_solver failed: coupler: Lagrangian momentum", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1], "coupler: world rank 0 is mpm_solver rank 0");
+  EXPECT_EQ(lines[2], "coupler: ice_solver stopped answering: mpm_solver waited 3 s (coupling.timeout) for it; "
+                      "the launch was ended");
+}
+
 TEST(CoupleRun, RejectsBadRankCounts) {
   const auto s = tinyScene();
   EXPECT_THROW(coupler::composeLaunch(s, "tiny.yaml", "/b", "mpirun", 0, 1), std::invalid_argument);

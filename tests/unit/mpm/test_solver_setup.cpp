@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mpm_problems.h"
+#include "mpm/solver/startup_check.h"
 #include "core/parallel/comm.h"
 #include "serial_mpi.h"
 
@@ -89,6 +90,46 @@ TEST(BadInput, ASolidSmallerThanTheParticleSpacingIsNamed) {
   const auto m = errorOf(s);
   EXPECT_NE(m.find("geometry.block: solid 'block' yields no particle"), std::string::npos) << m;
   EXPECT_NE(m.find("raise particles_per_cell"), std::string::npos) << m;
+}
+
+TEST(BadInput, DerivedElasticConstantsThatOverflowAreNamedAtStart) {
+  // K = 1e308: E = 9 K G / (3 K + G) = inf / inf. Refused at start (it used to run a step and stop
+  // on a wave speed of 1e152 m/s), naming the material and what was expected.
+  auto s = blockScene();
+  s.materials[0].constitutive.params = {{"bulk_modulus", 1e308}, {"shear_modulus", 4e5}};
+  const auto m = errorOf(s);
+  EXPECT_NE(m.find("materials.block.constitutive: the elastic constants K = 1e+308 Pa, G = 400000 Pa give a "
+                   "Young's modulus of "), std::string::npos) << m;
+  EXPECT_NE(m.find("expected finite elastic constants"), std::string::npos) << m;
+  // The same rule, on one process over the whole mesh, is what `coupler check` runs.
+  try {
+    validateStartup(s);
+    FAIL() << "validateStartup accepted K = 1e308";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), m);
+  }
+}
+
+TEST(BadInput, AWaveSpeedAboveTheSpeedOfLightIsNamedAtStart) {
+  auto s = blockScene();  // finite constants, but c = sqrt((K + 4G/3) / rho) ~ 1e10 m/s
+  s.materials[0].constitutive.params = {{"bulk_modulus", 1e23}, {"shear_modulus", 1e23}};
+  const auto m = errorOf(s);
+  EXPECT_NE(m.find("materials.block: the dilatational wave speed at the reference density (1000 kg/m^3) is "),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("expected a speed in (0, speed of light)"), std::string::npos) << m;
+}
+
+TEST(StartupValidation, ASolidWithoutParticlesIsNamedOverTheWholeMesh) {
+  auto s = blockScene();
+  s.geometry[0].shape.lo = {0.51, 0.51, 0};
+  s.geometry[0].shape.hi = {0.54, 0.53, 0};
+  try {
+    validateStartup(s);
+    FAIL() << "validateStartup accepted a solid without particles";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), errorOf(s));
+  }
+  EXPECT_NO_THROW(validateStartup(blockScene()));
 }
 
 TEST(StableStep, StrongDampingLimitsTheStepAndIsNamed) {

@@ -1,9 +1,11 @@
 #include "couplings/volume/common/mpmd_protocol.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <thread>
 
 
 namespace mpmice::coupler {
@@ -39,16 +41,28 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
            "Lagrangian momentum: lagrangian_momentum | exchange increments: exchange_momentum exchange_energy"}};
 }
 
-void maybeInjectFault(const Participant& p, long step) {
-  static const char* spec = std::getenv("MPMICE_FAULT_EXIT");
-  if (!spec) return;
+namespace {
+/// True when the environment's `variable` is "<p's name>:<step>".
+bool faultAt(const char* variable, const Participant& p, long step) {
+  const char* spec = std::getenv(variable);
+  if (!spec) return false;
   const std::string s(spec);
   const auto colon = s.find(':');
-  if (colon == std::string::npos || s.substr(0, colon) != p.name()) return;
-  if (std::atol(s.c_str() + colon + 1) != step) return;
-  std::fprintf(stderr, "%s: MPMICE_FAULT_EXIT: exiting abruptly after step %ld\n", p.name().c_str(), step);
-  std::fflush(stderr);
-  std::_Exit(9);
+  return colon != std::string::npos && s.substr(0, colon) == p.name() && std::atol(s.c_str() + colon + 1) == step;
+}
+}  // namespace
+
+void maybeInjectFault(const Participant& p, long step) {
+  if (faultAt("MPMICE_FAULT_EXIT", p, step)) {
+    std::fprintf(stderr, "%s: MPMICE_FAULT_EXIT: exiting abruptly after step %ld\n", p.name().c_str(), step);
+    std::fflush(stderr);
+    std::_Exit(9);
+  }
+  if (faultAt("MPMICE_FAULT_STALL", p, step)) {  // a program that stops answering (alive, never back)
+    std::fprintf(stderr, "%s: MPMICE_FAULT_STALL: sleeping for ever after step %ld\n", p.name().c_str(), step);
+    std::fflush(stderr);
+    for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+  }
 }
 
 }  // namespace mpmice::coupler

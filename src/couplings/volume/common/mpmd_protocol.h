@@ -17,7 +17,8 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& scene);
 
 /// Fault injection for the launch tests: when the environment sets MPMICE_FAULT_EXIT=<name>:<step>,
 /// the participant called <name> ("mpm" or "ice") exits abruptly (status 9, no MPI_Finalize) after
-/// that step, as a crashed program would.
+/// that step, as a crashed program would; MPMICE_FAULT_STALL=<name>:<step> makes it sleep for ever
+/// after that step, as a stopped or hung program would.
 void maybeInjectFault(const Participant& p, long step);
 
 }  // namespace mpmice::coupler

@@ -14,6 +14,7 @@
 #include "core/io/run_record.h"
 #include "core/time/time_loop.h"
 #include "core/util/progress.h"
+#include "coupler/launch/launch_watchdog.h"
 #include "couplings/volume/common/run_output.h"
 #include "couplings/volume/schedule/coupling_schedule.h"
 #include "ice/solver/health_check.h"
@@ -176,6 +177,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     const StepReport r = schedule->step(sides, transport, dt);
     t += dt;
     ++n;
+    LaunchWatchdog::step(n);
     if (afterStep) afterStep(n);
     checkHealth(sides, transport, comm, label, !both);
     const double exchange = transport.seconds() - exchange0, compute = now() - wall0 - exchange;
@@ -204,6 +206,9 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   }
   // 3. The last step is always written.
   if (!outputs.written(t) && outputs.due(t, true)) output(n, t);
+  // Both sides reached the end: a timed wait that names a peer stopped after the last step,
+  // before MPI_Finalize (which waits for every process without a bound of its own).
+  transport.trade({1.0}, "the end of the run");
 
   record.completed();
   // 4. Closing lines.

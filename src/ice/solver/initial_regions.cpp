@@ -1,0 +1,108 @@
+#include "ice/solver/initial_regions.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/scene/yaml_reader.h"
+#include "ice/ice_constants.h"
+
+namespace mpmice::ice {
+
+namespace {
+
+using core::scene_detail::formatNumber;
+
+}  // namespace
+
+void badInput(const core::SourceLoc& where, const std::string& msg) {
+  throw std::invalid_argument((where.line ? where.str() + ": " : std::string()) + msg);
+}
+
+void resolveState(const Eos& eos, double p, double T, std::optional<double> rho, double* rhoOut, double* eOut) {
+  if (rho) {
+    *rhoOut = *rho;
+    *eOut = eos.internalEnergy(*rho, p);
+  } else {
+    *rhoOut = eos.densityFromPT(p, T);
+    *eOut = eos.energyFromTemperature(*rhoOut, T);
+  }
+}
+
+RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& eos) {
+  const int nm = static_cast<int>(scene.materials.size());
+  RegionPlan plan;
+  plan.background.resize(static_cast<std::size_t>(nm));
+  auto external = [&](int r) { return scene.materials[r].kind == core::MaterialKind::Solid; };
+  for (int r = 0; r < nm && plan.firstFluid < 0; ++r)
+    if (!external(r)) plan.firstFluid = r;
+  for (const core::RegionSpec& reg : scene.geometry) {
+    if (reg.fill.empty()) badInput(reg.where, "geometry." + reg.name + ".fill: no material");
+    double sum = 0;
+    bool fluid = false;
+    for (const core::FillSpec& f : reg.fill) {
+      const int r = scene.materialIndex(f.material);
+      if (r < 0) badInput(reg.where, "geometry." + reg.name + ".fill: unknown material '" + f.material + "'");
+      if (f.volume_fraction < 0 || f.volume_fraction > 1)
+        badInput(reg.where, "geometry." + reg.name + ".fill." + f.material + ".volume_fraction = " + formatNumber(f.volume_fraction) +
+                           " must lie in [0, 1]");
+      sum += f.volume_fraction;
+      fluid |= !external(r);
+    }
+    if (!fluid) {
+      plan.solid.push_back(&reg);
+      continue;
+    }
+    if (std::abs(sum - 1.0) > 1e-9)
+      badInput(reg.where, "geometry." + reg.name + ".fill: volume fractions sum to " + formatNumber(sum) +
+                         "; they must sum to 1 (fix the volume_fraction values)");
+    if (!reg.pressure) badInput(reg.where, "geometry." + reg.name + ".pressure: required for fluid regions");
+    if (!(*reg.pressure > 0))
+      badInput(reg.where, "geometry." + reg.name + ".pressure = " + formatNumber(*reg.pressure) + " must be > 0");
+    if (reg.density && !(*reg.density > 0))
+      badInput(reg.where, "geometry." + reg.name + ".density = " + formatNumber(*reg.density) + " must be > 0");
+    if (!(reg.temperature > 0))
+      badInput(reg.where, "geometry." + reg.name + ".temperature = " + formatNumber(reg.temperature) + " must be > 0");
+    for (const core::FillSpec& f : reg.fill) {
+      const int r = scene.materialIndex(f.material);
+      BackgroundState& bg = plan.background[static_cast<std::size_t>(r)];
+      if (external(r) || bg.set) continue;
+      resolveState(*eos[static_cast<std::size_t>(r)], *reg.pressure, reg.temperature, reg.density, &bg.rho, &bg.e);
+      if (!(bg.rho > 0) || !std::isfinite(bg.rho) || !std::isfinite(bg.e))
+        badInput(reg.where, "geometry." + reg.name + ": material '" + f.material + "' has no valid state at p = " +
+                           formatNumber(*reg.pressure) + " Pa, T = " + formatNumber(reg.temperature) + " K (its equation of state gives " +
+                           "density " + formatNumber(bg.rho) + " kg/m^3, specific energy " + formatNumber(bg.e) +
+                           " J/kg); expected a finite density > 0 and a finite energy");
+      bg.set = true;
+    }
+    plan.fluid.push_back(&reg);
+  }
+  for (int r = 0; r < nm; ++r) {
+    BackgroundState& bg = plan.background[static_cast<std::size_t>(r)];
+    if (!external(r) && !bg.set) {  // never placed: an absent material at 1 atm, 300 K
+      const Eos& e = *eos[static_cast<std::size_t>(r)];
+      bg.rho = e.densityFromPT(kReferencePressure, kReferenceTemperature);
+      bg.e = e.energyFromTemperature(bg.rho, kReferenceTemperature);
+      bg.set = bg.rho > 0;
+    }
+  }
+  return plan;
+}
+
+CellCover coverAt(const RegionPlan& plan, const core::RealVect& x, int dim) {
+  CellCover c;
+  for (const core::RegionSpec* rg : plan.fluid)
+    if (rg->shape.contains(x, dim)) c.fluid = rg;
+  // Cells whose centre lies in a solid object (declared after the fluid region) hold no fluid:
+  // the solid's mass arrives through setExternalMaterialState.
+  for (const core::RegionSpec* rg : plan.solid)
+    if (rg->shape.contains(x, dim) && (!c.fluid || rg > c.fluid)) c.inSolid = true;
+  return c;
+}
+
+void requireCovered(const RegionPlan& plan, const CellCover& cover, int i, int j, int k) {
+  if (!cover.fluid && !cover.inSolid && plan.firstFluid >= 0)
+    throw std::invalid_argument("geometry: cell " + std::to_string(i) + "," + std::to_string(j) + "," +
+                                std::to_string(k) + " is covered by no fluid region (add a background region)");
+}
+
+}  // namespace mpmice::ice
