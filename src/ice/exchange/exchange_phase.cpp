@@ -7,15 +7,8 @@
 // (mass ~1e-10 of the cell's) would take all of it, +|du|^2/2 per unit mass each step, and its
 // specific volume, hence du = dt v grad p, grows with its temperature: a runaway (the seed
 // cylinder's wall, docs/coupling.md). Uintah's exchange converts none of D to internal energy.
-// With external materials D is reduced by the kinetic energy the Lagrangian phase gave the fluids
-// and left to be paid here (IceState::kineticLagrangian): the gas a solid's pressure jump
-// accelerates and the drag stops in the same step gets its energy back instead of heating the
-// solid (docs/coupling.md "Energy budget"). The increments of external materials are kept for the
-// coupler (their energy adds to their share of the Lagrangian phase's correction).
-#include <algorithm>
-
+// The increments of external materials are kept for the coupler.
 #include "ice/exchange/pointwise_exchange.h"
-#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -28,13 +21,13 @@ void IceSolver::exchange() {
   const double V = mesh_.cellVolume();
   const double dtV = dt_ * V;
   for (MaterialState& m : st_.mat) {
-    m.dMom.fill(0.0);  // dEnergy holds the Lagrangian phase's share already; the heat is added
+    m.dMom.fill(0.0);
+    m.dEnergy.fill(0.0);
   }
   if (nm < 2 || (!anyK_ && !anyH_)) return;
   struct Ptr {
     const double *m, *th, *vL;
     double *uL[3], *eL, *dMom[3], *dE;
-    const double* kineticL;  // null: nothing to pay here
     double cv;
     bool external;
   };
@@ -43,8 +36,7 @@ void IceSolver::exchange() {
     MaterialState& m = st_.mat[r];
     ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(),
               {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
-              {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(),
-              m.external || !anyExternal_ ? nullptr : m.kineticL.data(), m.eos->cv(), m.external};
+              {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(), m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
   forEach(owned_, [&](int i, int j, int k) {
@@ -62,44 +54,24 @@ void IceSolver::exchange() {
       }
       exchangeCouplings(nm, dtV, K_.data(), th, w);
       pointwiseExchange(nm, s, w, x, dim);
-      // D: kinetic energy the drag dissipates [J]; C: heat capacity m cv [J/K]. With solids, each
-      // fluid also pays here the kinetic energy G_r it gained in the Lagrangian phase
-      // (lagrangian_phase.cpp): the part the drag takes back at once, min(G_r, its loss L_r), is
-      // returned to it (the gas a solid's pressure jump accelerates and the drag stops keeps its
-      // energy), the rest G_r - that part from its own internal energy (the kinetic energy it
-      // keeps; shared by heat capacity instead where that would drain it); the remaining drag heat
-      // is shared by heat capacity. Sum: D - sum_r G_r, so the total energy is conserved.
-      double D = 0, C = 0, own[kMaxMaterials];
+      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
       for (int r = 0; r < nm; ++r) {
-        double L = 0;
         for (int d = 0; d < dim; ++d) {
           const double un = x[d * nm + r], uo = x0[d * nm + r];
-          L += 0.5 * mass[r] * (uo - un) * (uo + un);
+          D += 0.5 * mass[r] * (uo - un) * (uo + un);
         }
-        D += L;
         C += mass[r] * ptr[r].cv;
-        own[r] = 0.0;
-        const double G = ptr[r].kineticL ? ptr[r].kineticL[c] : 0.0;
-        if (G == 0.0) continue;
-        const double back = G > 0 && L > 0 ? std::min(G, L) : 0.0;  // returned to r
-        D -= back;
-        own[r] = back - G;  // <= 0: r pays the kinetic energy it keeps
-        const double e = ptr[r].eL[c];
-        if (!(mass[r] > 0) || e + own[r] / mass[r] < kMinEnergyShare * e) {  // would drain it: shared
-          D += own[r];
-          own[r] = 0.0;
-        }
       }
       for (int r = 0; r < nm; ++r) {
         const Ptr& Q = ptr[r];
-        const double de = (C > 0 ? D * ptr[r].cv / C : 0.0) + (mass[r] > 0 ? own[r] / mass[r] : 0.0);
+        const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
         for (int d = 0; d < dim; ++d) {
           const double un = x[d * nm + r], uo = x0[d * nm + r];
           Q.uL[d][c] = un;
           if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
         }
         Q.eL[c] += de;
-        if (Q.external) Q.dE[o] += mass[r] * de;
+        if (Q.external) Q.dE[o] = mass[r] * de;
       }
     }
     if (anyH_) {

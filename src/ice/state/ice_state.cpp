@@ -22,15 +22,12 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
       m.velFace[d] = Field(m.name + "/face_velocity", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
     m.dMom = Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0);
     m.dEnergy = Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0);
-    m.couplingWork = Field(m.name + "/coupling_work", Centering::Cell, owned, 1, 0);
-    m.kineticL = cell(m.name + "/kinetic_energy_L", 1);
   }
   press = cell("pressure", 1);
   pressEq = cell("equilibrium_pressure", 1);
   dp = cell("pressure_increment", 1);
   iters = cell("pressure_iterations", 1);
   divU = cell("velocity_divergence", 1);
-
   for (int d = 0; d < 3; ++d) {
     pressFace[d] = Field("face_pressure", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
     volFlux[d] = Field("face_volume_flux", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);

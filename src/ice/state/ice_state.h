@@ -35,9 +35,6 @@ struct MaterialState {
   core::Field velL, eintL, spvolL;                   // Lagrangian values
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction
   core::Field dMom, dEnergy;          // exchange increments (external materials; owned cells)
-  core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)
-  core::Field kineticL;               // kinetic energy [J] a fluid gained in the Lagrangian phase and
-                                      // pays in the exchange (with external materials and K > 0)
 };
 
 struct IceState {
