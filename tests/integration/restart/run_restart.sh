@@ -53,13 +53,16 @@ echo "resuming from $where (step $k; $removed output steps to recompute)"
 (cd "$work/resumed" && "${cmd[@]}" --restart "$where" "$scene") > "$work/resumed.log" 2>&1 || {
   cat "$work/resumed.log"; fail "the resumed run failed"; }
 grep -q "^restart: " "$work/resumed.log" || { cat "$work/resumed.log"; fail "the resumed run did not report its checkpoint"; }
-a=$(cd "$work/full/$out" && ls | grep -v '_run.yaml$' | sort) b=$(cd "$work/resumed/$out" && ls | grep -v '_run.yaml$' | sort)
+# The run record and the program logs describe each run (its command line, its times); a resumed
+# log is the copied one with the resumed run's section appended.
+a=$(cd "$work/full/$out" && ls | grep -v -e '_run.yaml$' -e '^log\.' | sort) b=$(cd "$work/resumed/$out" && ls | grep -v -e '_run.yaml$' -e '^log\.' | sort)
 [ "$a" = "$b" ] || fail "the output directories hold different files: full [$a] resumed [$b]"
 n=0
 for f in $a; do
   case "$f" in
-    # (a checkpoint's byte length of the coupling log depends on those wall-time columns)
-    *.h5) h5diff --exclude-path /data/run.coupling_csv "$work/full/$out/$f" "$work/resumed/$out/$f" > "$work/diff.txt" 2>&1 || {
+    # (a checkpoint's byte length of the coupling log depends on those wall-time columns; the root
+    # attributes are the run metadata: the command line and start time of each run)
+    *.h5) h5diff --exclude-attribute / --exclude-path /data/run.coupling_csv "$work/full/$out/$f" "$work/resumed/$out/$f" > "$work/diff.txt" 2>&1 || {
             head -40 "$work/diff.txt"; fail "$f differs"; } ;;
     *.csv) cmp <(untimed "$work/full/$out/$f") <(untimed "$work/resumed/$out/$f") || fail "$f differs" ;;
     *) cmp "$work/full/$out/$f" "$work/resumed/$out/$f" || fail "$f differs" ;;
