@@ -16,6 +16,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  python3-h5py python3-numpy
   openfoam openfoam-examples
 )
 

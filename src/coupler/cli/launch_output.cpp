@@ -55,8 +55,8 @@ std::string fmt(double v) {
 }  // namespace
 
 LaunchOutput::LaunchOutput(const LaunchPlan& plan, std::ostream& terminal, std::unique_ptr<core::LogFile> fluidLog,
-                           int fluidProgram)
-    : plan_(plan), terminal_(terminal), fluidLog_(std::move(fluidLog)), fluidProgram_(fluidProgram) {}
+                           int fluidProgram, bool inPlace)
+    : plan_(plan), terminal_(terminal), fluidLog_(std::move(fluidLog)), fluidProgram_(fluidProgram), inPlace_(inPlace) {}
 
 int LaunchOutput::programOf(int worldRank) const {
   if (worldRank < 0) return -1;
@@ -119,6 +119,28 @@ bool LaunchOutput::readClosingLine(const std::string& text, SideSummary& s) {
   return true;
 }
 
+std::optional<std::string> LaunchOutput::coupledProgressLine(const std::string& text) {
+  static const std::regex progress(
+      R"(^step (\d+)  t = (\S+) / (\S+) s \(([^)]*)\)  dt = \S+  wall \S+ s  ETA (\S+)(?: s)?((?:  \w+=\S+)*)$)");
+  static const std::regex extra(R"((\w+)=(\S+))");
+  std::smatch m;
+  if (!std::regex_match(text, m, progress)) return std::nullopt;
+  std::string out = "coupler: step " + m[1].str() + "  t = " + m[2].str() + " / " + m[3].str() + " s (" + m[4].str() +
+                    ")  ETA " + (m[5].str() == "--" ? std::string("--") : m[5].str() + " s");
+  std::optional<double> iters, total;
+  const std::string extras = m[6].str();
+  for (auto it = std::sregex_iterator(extras.begin(), extras.end(), extra); it != std::sregex_iterator(); ++it) {
+    if ((*it)[1] == "iters") iters = std::stod((*it)[2]);
+    if ((*it)[1] == "iters_total") total = std::stod((*it)[2]);
+  }
+  if (iters) {
+    out += "  coupling iterations " + fmt(*iters);
+    const long steps = std::stol(m[1]);
+    if (total && steps > 0) out += " (" + fmt(*total / double(steps)) + " per step)";
+  }
+  return out;
+}
+
 std::string LaunchOutput::summaryLine(const std::string& program, int ranks, const SideSummary& s,
                                       std::optional<long> iterations) {
   if (!s.steps || !s.time || !s.compute || !s.wait) return {};
@@ -143,6 +165,19 @@ void LaunchOutput::line(int program, const std::string& text) {
     return;
   }
   if (program >= 0 && readClosingLine(text, sides_[program])) return;
+  if (program >= 0)
+    if (const auto progress = coupledProgressLine(text)) return show(*progress, true);
+  show(text);
+}
+
+void LaunchOutput::show(const std::string& text, bool progress) {
+  if (progress && inPlace_) {
+    terminal_ << "\r" << text << "\033[K" << std::flush;
+    progressShown_ = true;
+    return;
+  }
+  if (progressShown_) terminal_ << "\n";
+  progressShown_ = false;
   terminal_ << text << "\n" << std::flush;
 }
 
@@ -155,6 +190,8 @@ void LaunchOutput::finish(bool succeeded) {
   for (auto& [key, text] : partial_)
     if (!text.empty()) line(programOf(key.first), text);
   partial_.clear();
+  if (progressShown_) terminal_ << "\n";
+  progressShown_ = false;
   // The coupling iterations: the solid side counts them (the verdict is the solid's).
   std::optional<long> iterations;
   for (const auto& [p, s] : sides_)

@@ -13,8 +13,14 @@
 ///              30 coupling iterations (1 per step), wall 1.6 s
 ///   (both sides take the same coupling iterations: the solid's verdict ends each step on both).
 ///   When it fails, the held lines are shown as they were, each prefixed with its program.
-/// - Everything else (the progress lines, errors, mpirun's own messages) reaches the terminal as it
-///   was written. Each program keeps its full output in its own log file.
+/// - A program's progress lines ("step 120  t = ... / ... s (80.0%)  dt = ...  wall ... s  ETA ... s
+///   iters=1 iters_total=120", core/util/progress.h; in a coupled launch only the solid side prints
+///   them) become the launch's one coupled progress line:
+///     coupler: step 120  t = 1.200e-04 / 1.500e-04 s (80.0%)  ETA 0.4 s  coupling iterations 1 (1 per step)
+///   On a terminal (inPlace) each one overwrites the last ("\r", erase to the end of the line), so the
+///   run shows a single line that moves; elsewhere (a pipe, a file) each is a line of its own.
+/// - Everything else (errors, mpirun's own messages) reaches the terminal as it was written. Each
+///   program keeps its full output in its own log file.
 #include <map>
 #include <memory>
 #include <optional>
@@ -39,8 +45,9 @@ struct SideSummary {
 class LaunchOutput {
  public:
   /// fluidLog: where the lines of the program at fluidProgram go (null: an MPM-ICE launch).
+  /// inPlace: the terminal is a terminal (isatty), the progress line is rewritten in place.
   LaunchOutput(const LaunchPlan& plan, std::ostream& terminal, std::unique_ptr<core::LogFile> fluidLog = nullptr,
-               int fluidProgram = -1);
+               int fluidProgram = -1, bool inPlace = false);
   /// A piece of the launch's output, as read from the pipe.
   void feed(std::string_view chunk);
   /// The end of the output: what is still pending, then the summaries (succeeded) or the held lines.
@@ -51,17 +58,21 @@ class LaunchOutput {
 
   /// Reads a closing line into `s`; false when it is none.
   static bool readClosingLine(const std::string& line, SideSummary& s);
+  /// The coupled progress line made of a program's progress line; none when `line` is not one.
+  static std::optional<std::string> coupledProgressLine(const std::string& line);
   /// The labelled summary line of `program` on `ranks` ranks (empty when figures are missing).
   static std::string summaryLine(const std::string& program, int ranks, const SideSummary& s,
                                  std::optional<long> iterations);
 
  private:
   void line(int program, const std::string& text);
+  void show(const std::string& text, bool progress = false);  // to the terminal
   [[nodiscard]] int programOf(int worldRank) const;
   const LaunchPlan& plan_;
   std::ostream& terminal_;
   std::unique_ptr<core::LogFile> fluidLog_;
   int fluidProgram_;
+  bool inPlace_, progressShown_ = false;  // a progress line waits on the terminal without its newline
   std::string pending_, text_;
   int current_ = -2;                      // the program of the piece being read (-1: untagged, -2: none)
   std::map<std::pair<int, int>, std::string> partial_;  // (world rank, stream) -> its unfinished line

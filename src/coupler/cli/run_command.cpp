@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <poll.h>
@@ -145,7 +146,8 @@ int runLaunch(const LaunchPlan& plan, std::ostream& out, std::ostream& err, std:
   const StopSignals signals;
   Process launch(plan.argv);
   const int fluidProgram = fluidLog ? static_cast<int>(plan.programs.size()) - 1 : -1;
-  LaunchOutput output(plan, out, std::move(fluidLog), fluidProgram);
+  const bool inPlace = &out == &std::cout && isatty(STDOUT_FILENO) == 1;  // one progress line that moves
+  LaunchOutput output(plan, out, std::move(fluidLog), fluidProgram, inPlace);
   char buf[4096];
   int forwarded = 0;
   auto forwardedAt = std::chrono::steady_clock::now();

@@ -45,6 +45,12 @@ grep -E -q "^coupler: ice_solver \(1 rank\): 3 steps to t = [0-9.e+-]+ s, comput
   fail "the fluid's summary lacks steps, compute and wait time or iterations"
 if grep -q -e "^done:" -e "^coupling (" "$t"; then fail "the programs' own closing lines reached the terminal"; fi
 [ "$(grep -c "^scene pressurized_cylinder (" "$t")" -eq 1 ] || fail "not one progress banner"
+# One coupled progress line (coupler/cli/launch_output.h) for the last step at least; the solid's
+# own progress lines only in its log.
+grep -E -q "^coupler: step 3  t = [0-9.e+-]+ / [0-9.e+-]+ s \([0-9.]+%\)  ETA [0-9.e+-]+ s  coupling iterations 1 \(1 per step\)$" "$t" ||
+  fail "no coupled progress line for the last step"
+if grep -q "^step " "$t"; then fail "a program's own progress line reached the terminal"; fi
+grep -q "^step 3  t = .*  iters=1  iters_total=3" "$dir/output/log.mpm_solver" || fail "the solid's log lacks its progress line"
 for side in mpm_solver ice_solver; do
   log=$dir/output/log.$side
   [ "$(grep -c "^==== $side 0." "$log")" -eq 2 ] || { cat "$log"; fail "$log does not hold both runs"; }

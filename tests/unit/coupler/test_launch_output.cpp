@@ -115,3 +115,42 @@ TEST(LaunchOutput, ReadsTheClosingLinesOfEachSide) {
   // Without the compute/wait split there is no summary: the held lines are shown instead.
   EXPECT_EQ(coupler::LaunchOutput::summaryLine("mpm_solver", 1, s, std::nullopt), "");
 }
+
+// The solid's progress lines become the launch's one coupled progress line: step, simulated time,
+// the estimate of the time left and the coupling iterations (this step, and per step so far).
+TEST(LaunchOutput, TheSolidsProgressBecomesOneCoupledProgressLine) {
+  const std::string progress =
+      "[7,0]<stdout>:step 120  t = 1.200e-04 / 1.500e-04 s (80.0%)  dt = 1.0e-06  wall 1.6 s  ETA 0.4 s  iters=3  "
+      "iters_total=300  lin_iters=12\n";
+  EXPECT_EQ(*coupler::LaunchOutput::coupledProgressLine(progress.substr(14, progress.size() - 15)),
+            "coupler: step 120  t = 1.200e-04 / 1.500e-04 s (80.0%)  ETA 0.4 s  coupling iterations 3 (2.5 per step)");
+  EXPECT_EQ(*coupler::LaunchOutput::coupledProgressLine("step 1  t = 0.000e+00 / 1.0e+00 s (0.0%)  dt = 1.0e-06  wall 0.0 s  ETA --"),
+            "coupler: step 1  t = 0.000e+00 / 1.0e+00 s (0.0%)  ETA --");
+  EXPECT_FALSE(coupler::LaunchOutput::coupledProgressLine("step 10  t = 1.0e-05 / 2.0e-05 s (50.0%)"));
+  EXPECT_FALSE(coupler::LaunchOutput::coupledProgressLine("done: 3 steps, t = 2.005e-05 s, wall 0.9 s"));
+
+  for (const bool inPlace : {false, true}) {
+    const auto plan = mpmdPlan();
+    std::ostringstream terminal;
+    coupler::LaunchOutput o(plan, terminal, nullptr, -1, inPlace);
+    const std::string later =
+        "[7,0]<stdout>:step 150  t = 1.500e-04 / 1.500e-04 s (100.0%)  dt = 1.0e-06  wall 2.0 s  ETA 0.0 s  iters=1  "
+        "iters_total=330\n";
+    feedInPieces(o, progress + later + "[7,2]<stderr>:ice note\n" + progress + kSolidClosing + kFluidClosing, 5);
+    o.finish(true);
+    const std::string first =
+        "coupler: step 120  t = 1.200e-04 / 1.500e-04 s (80.0%)  ETA 0.4 s  coupling iterations 3 (2.5 per step)";
+    const std::string second =
+        "coupler: step 150  t = 1.500e-04 / 1.500e-04 s (100.0%)  ETA 0.0 s  coupling iterations 1 (2.2 per step)";
+    const std::string summaries =
+        "coupler: mpm_solver (2 ranks): 3 steps to t = 2.005e-05 s, compute 0.5 s, wait 0.25 s, 6 coupling "
+        "iterations (2 per step), wall 0.9 s\n"
+        "coupler: ice_solver (1 rank): 3 steps to t = 2.005e-05 s, compute 0.125 s, wait 0.625 s, 6 coupling "
+        "iterations (2 per step), wall 0.8 s\n";
+    if (inPlace)  // one line, rewritten; a line of another kind first ends it
+      EXPECT_EQ(terminal.str(), "\r" + first + "\033[K\r" + second + "\033[K\nice note\n\r" + first + "\033[K\n" + summaries);
+    else
+      EXPECT_EQ(terminal.str(), first + "\n" + second + "\nice note\n" + first + "\n" + summaries);
+    EXPECT_NE(o.text().find("step 150  t = 1.500e-04"), std::string::npos) << "the text explainFailure reads";
+  }
+}

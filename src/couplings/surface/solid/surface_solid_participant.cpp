@@ -143,7 +143,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
 
   std::vector<double> dispPoints(3 * static_cast<std::size_t>(setup.points), 0.0);  // what the fluid uses
   std::vector<double> lastForces;
-  long window = 0, substepsTotal = 0;
+  long window = 0, substepsTotal = 0, iterationsTotal = 0;
   double t = 0;
   auto mapForces = [&](const std::vector<double>& faceForces) {
     std::vector<double> f(3 * cloud.size(), 0.0);
@@ -257,6 +257,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     }
     ++window;
     substepsTotal += substeps;
+    iterationsTotal += iterations;
     t = head.tEnd;
     const auto F = totalForce(forces);
     if (csv)
@@ -264,7 +265,10 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
                 F[2], residual, compute, exchange});
     if (probes && !oneWay) probes->record(mpm);
     if (!oneWay && outputs.due(mpm.time()) && output) output->write(mpm);
-    progress.step(static_cast<int>(window), t, head.dt, {{"iters", double(iterations)}, {"mpm_substeps", double(substeps)}});
+    // The last window's line always (the coupled progress line of `coupler run` shows it).
+    progress.step(static_cast<int>(window), t, head.dt,
+                  {{"iters", double(iterations)}, {"iters_total", double(iterationsTotal)}, {"mpm_substeps", double(substeps)}},
+                  head.last);
     if (head.last) break;
   }
 

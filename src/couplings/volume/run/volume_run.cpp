@@ -196,11 +196,11 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     }
     if (probes) probes->record(sides.solid->solver());
     if (outputs.due(t)) output(n, t);
-    core::Progress::Extras extras{{"iters", double(r.iterations)}};
+    core::Progress::Extras extras{{"iters", double(r.iterations)}, {"iters_total", double(iterations)}};
     if (sides.fluid && sides.fluid->solver().semiImplicit())
       extras.emplace_back("lin_iters", double(sides.fluid->solver().linearIterations()));
-    progress.step(static_cast<int>(n), t, dt, extras);
     const bool last = !core::goesOn(t, n, scene.time.end, scene.time.max_steps);
+    progress.step(static_cast<int>(n), t, dt, extras, last && sides.solid);  // the solid prints the last step always
     if (last && !outputs.written(t) && outputs.due(t, true)) output(n, t);  // the last step
     checkpoint(last);
   }
