@@ -102,6 +102,8 @@ bool LaunchOutput::readClosingLine(const std::string& text, SideSummary& s) {
   static const std::regex done(R"(^done: (\d+) steps?, t = ([-+0-9.eE]+) s, wall ([-+0-9.eE]+) s)");
   static const std::regex split(R"(^coupling \(.*\): computed ([-+0-9.eE]+) s, ([-+0-9.eE]+) s in exchange)");
   static const std::regex iters(R"(^coupling: schedule \S+, (\d+) iterations in (\d+) steps)");
+  // The transport's details (message latency, each exchange point, bytes per step): the log keeps them.
+  static const std::regex detail(R"(^coupling \(.*\): (message latency|per exchange point|[0-9]+ bytes exchanged))");
   std::smatch m;
   if (std::regex_search(text, m, done)) {
     s.steps = std::stol(m[1]);
@@ -112,7 +114,7 @@ bool LaunchOutput::readClosingLine(const std::string& text, SideSummary& s) {
     s.wait = std::stod(m[2]);
   } else if (std::regex_search(text, m, iters)) {
     s.iterations = std::stol(m[1]);
-  } else {
+  } else if (!std::regex_search(text, m, detail)) {
     return false;
   }
   s.held.push_back(text);

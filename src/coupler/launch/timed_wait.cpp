@@ -1,5 +1,10 @@
 #include "coupler/launch/timed_wait.h"
 
+#include <sys/prctl.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <sstream>
 #include <thread>
@@ -17,18 +22,64 @@ std::string timeoutMessage(const std::string& peer, const std::string& what, dou
   return os.str();
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Involuntary context switches of the calling thread: the kernel gave its core to another task
+// while it polled (a sched_yield that switched counts too). None while a rank has a core to
+// itself; some as soon as the cores are oversubscribed.
+long involuntarySwitches() {
+  rusage u{};
+  getrusage(RUSAGE_THREAD, &u);
+  return u.ru_nivcsw;
+}
+
+// Until when the waits of this process start by sleeping: set when a poll lost its core.
+std::atomic<Clock::rep> g_contendedUntil{0};
+constexpr auto kContendedFor = std::chrono::milliseconds(200);
+constexpr auto kSpinWhenContended = std::chrono::microseconds(20);
+constexpr auto kLongestSleep = std::chrono::microseconds(100);
+constexpr int kPollsPerCheck = 16;
+
+// Sleeps as short as asked: the default timer slack (50 us) would stretch every short sleep.
+void shortTimerSlack() {
+  static const bool once = [] {
+    prctl(PR_SET_TIMERSLACK, 1000UL, 0, 0, 0);  // 1 us, this thread (the main thread does every wait)
+    return true;
+  }();
+  (void)once;
+}
+
+}  // namespace
+
 void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& peer, const std::string& what,
              Waiting waiting) {
   if (reqs.empty()) return;
-  const auto start = std::chrono::steady_clock::now();
-  int spins = 0;
-  for (;;) {
+  shortTimerSlack();
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout));
+  // Spin (poll without pause) while this rank has its core: the lowest latency, and the core is
+  // otherwise idle. Once the kernel takes the core away while polling (other ranks or programs
+  // want it), poll with sleeps that grow to 100 us, and start the waits of the next 200 ms so.
+  const bool contended = Clock::now().time_since_epoch().count() < g_contendedUntil.load(std::memory_order_relaxed);
+  auto spinUntil = contended ? start + kSpinWhenContended : deadline;
+  const long switches0 = involuntarySwitches();
+  auto nap = std::chrono::microseconds(2);
+  for (int polls = 1;; ++polls) {
     int done = 0;
     MPI_Testall(static_cast<int>(reqs.size()), reqs.data(), &done, MPI_STATUSES_IGNORE);
+    if (done) break;
+    const auto now = Clock::now();
+    if (now < spinUntil) {
+      if (polls % kPollsPerCheck == 0 && involuntarySwitches() != switches0) {
+        spinUntil = now;  // lost the core while spinning: sleep from now on
+        g_contendedUntil.store((now + kContendedFor).time_since_epoch().count(), std::memory_order_relaxed);
+      }
+      continue;
+    }
     LaunchWatchdog::beat();  // waiting within a bound is progress (the bound names the peer)
-    if (done) return;
-    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (waited > timeout) {
+    if (now > deadline) {
       for (auto& r : reqs)
         if (r != MPI_REQUEST_NULL) {
           MPI_Cancel(&r);
@@ -36,11 +87,10 @@ void waitAll(std::vector<MPI_Request>& reqs, double timeout, const std::string& 
         }
       throw CouplingTimeout(timeoutMessage(peer, what, timeout, waiting));
     }
-    // Spin briefly for low latency, then sleep between polls. Polling with yield() instead was
-    // 1.5x faster on an idle machine but 3-4x slower with the 2 cores oversubscribed (other
-    // ranks, builds, parallel tests): docs/benchmarks.md.
-    if (++spins > 200) std::this_thread::sleep_for(std::chrono::microseconds(spins > 2000 ? 500 : 20));
+    std::this_thread::sleep_for(nap);
+    nap = std::min(nap * 2, kLongestSleep);
   }
+  LaunchWatchdog::beat();
 }
 
 }  // namespace mpmice::coupler

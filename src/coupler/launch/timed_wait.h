@@ -2,7 +2,16 @@
 /// @brief Every wait of the coupler has a timeout: non-blocking MPI requests polled until done.
 ///
 /// A wait that runs out throws CouplingTimeout naming the peer participant and what was being
-/// waited for; the program's launch layer then aborts the whole launch, so no run hangs.
+/// waited for; the program's launch layer then aborts the whole launch, so no run hangs (and the
+/// launch watchdog bounds everything else).
+///
+/// How it waits: it polls without pause while this process has its core (the latency of the
+/// shared-memory transport, ~1 us, and the core is otherwise idle), checking every 16 polls
+/// whether the kernel took the core away (involuntary context switches of the thread, which a
+/// yield that let another task run also counts). Once it did (the cores are oversubscribed:
+/// more ranks than cores, builds, other tests), the wait polls between sleeps growing from 2 to
+/// 100 us, and the waits of the next 200 ms spin only 20 us before sleeping, so a waiting rank
+/// leaves the core to the peer it waits for. docs/benchmarks.md ("Coupling overhead").
 #include <mpi.h>
 
 #include <stdexcept>

@@ -7,8 +7,8 @@ namespace mpmice::coupler {
 
 class InMemoryTransport final : public Transport {
  public:
-  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to, int tag,
-            const std::string& what) override;
+  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to,
+            std::span<const int> components, int tag, const std::string& what) override;
   std::vector<double> trade(const std::vector<double>& mine, const std::string& what) override;
   [[nodiscard]] bool inMemory() const override { return true; }
 };

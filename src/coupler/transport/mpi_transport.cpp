@@ -1,5 +1,7 @@
 #include "coupler/transport/mpi_transport.h"
 
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include "coupler/launch/timed_wait.h"
@@ -8,7 +10,7 @@
 namespace mpmice::coupler {
 
 namespace {
-constexpr int kTradeTag = 31;
+constexpr int kTradeTag = 31, kLatencyTag = 32;
 }  // namespace
 
 std::vector<double> tradeValues(const Participant& p, const std::vector<double>& mine, const std::string& what) {
@@ -28,20 +30,46 @@ MpiTransport::MpiTransport(const Participant& participant, const core::Decomposi
                            const core::Decomposition& peer)
     : participant_(participant), exchange_(participant, mine, peer) {}
 
-void MpiTransport::move(std::span<const core::Field* const> from, std::span<core::Field* const> to, int tag,
-                        const std::string& what) {
-  const Stopwatch watch(seconds_);
-  if (!from.empty() && !to.empty())
-    throw std::logic_error("MPI transport: " + what + " is produced and consumed in one process");
-  ++moves_;
-  if (!from.empty()) exchange_.send({from.begin(), from.end()}, tag, what);
-  if (!to.empty()) exchange_.receive({to.begin(), to.end()}, tag, what);
+void MpiTransport::move(std::span<const core::Field* const> from, std::span<core::Field* const> to,
+                        std::span<const int> components, int tag, const std::string& what) {
+  double seconds = 0;
+  const long long before = exchange_.sentValues() + exchange_.receivedValues();
+  {
+    const Stopwatch total(seconds_), point(seconds);
+    if (!from.empty() && !to.empty())
+      throw std::logic_error("MPI transport: " + what + " is produced and consumed in one process");
+    if (components.size() != std::max(from.size(), to.size()))
+      throw std::logic_error("MPI transport: " + what + ": components not declared for every field");
+    ++moves_;
+    if (!from.empty()) exchange_.send({from.begin(), from.end()}, tag, what, components);
+    if (!to.empty()) exchange_.receive({to.begin(), to.end()}, tag, what, components);
+  }
+  const long long values = exchange_.sentValues() + exchange_.receivedValues() - before;
+  account(tag, what, seconds, static_cast<long long>(sizeof(double)) * values);
 }
 
 std::vector<double> MpiTransport::trade(const std::vector<double>& mine, const std::string& what) {
   const Stopwatch watch(seconds_);
   ++trades_;
   return tradeValues(participant_, mine, what);
+}
+
+double MpiTransport::measureLatency(int rounds) {
+  if (!participant_.local().root() || rounds < 1) return 0.0;
+  double mine = 0, theirs = 0;
+  std::vector<MPI_Request> reqs(2, MPI_REQUEST_NULL);
+  MPI_Recv_init(&theirs, 1, MPI_DOUBLE, 0, kLatencyTag, participant_.inter(), &reqs[0]);
+  MPI_Send_init(&mine, 1, MPI_DOUBLE, 0, kLatencyTag, participant_.inter(), &reqs[1]);
+  std::vector<double> times;
+  for (int r = 0; r <= rounds; ++r) {  // round 0 waits for the peer to arrive: not counted
+    const auto start = std::chrono::steady_clock::now();
+    MPI_Startall(2, reqs.data());
+    waitAll(reqs, participant_.timeout(), participant_.peerName(), "latency probe");
+    if (r > 0) times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  for (auto& q : reqs) MPI_Request_free(&q);
+  std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+  return times[times.size() / 2];
 }
 
 }  // namespace mpmice::coupler

@@ -18,9 +18,10 @@ class MpiTransport final : public Transport {
  public:
   /// mine: this program's decomposition; the peer's is built from the same mesh.
   MpiTransport(const Participant& participant, const core::Decomposition& mine, const core::Decomposition& peer);
-  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to, int tag,
-            const std::string& what) override;
+  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to,
+            std::span<const int> components, int tag, const std::string& what) override;
   std::vector<double> trade(const std::vector<double>& mine, const std::string& what) override;
+  double measureLatency(int rounds) override;
   [[nodiscard]] bool inMemory() const override { return false; }
   [[nodiscard]] const Participant& participant() const { return participant_; }
 

@@ -8,8 +8,8 @@
 # program's output base, `<scene>_solid`); then compares every file of the two
 # output directories: each HDF5 file (output steps and checkpoints) with h5diff, exactly (every
 # dataset, every value, every attribute), the CSVs and the XDMF index byte for byte (a CSV's
-# wall-time columns, compute_s and exchange_s of the coupling log, are left out: they differ
-# between any two runs).
+# wall-time columns, compute_s and exchange_s of the coupling log and, in an MPMD launch, the
+# peer's peer_compute_s and peer_exchange_s, are left out: they differ between any two runs).
 #   run_restart.sh MODE WORK BASE -- COMMAND...   (COMMAND runs the scene; --restart is inserted
 #                                                 before its last argument, the scene file)
 set -u
@@ -20,9 +20,9 @@ scene=${cmd[-1]}
 unset 'cmd[-1]'
 rm -rf "$work" && mkdir -p "$work/full" "$work/resumed"
 fail() { echo "FAIL: $*"; exit 1; }
-# A CSV without its wall-time columns (compute_s, exchange_s).
+# A CSV without its wall-time columns (compute_s, exchange_s, peer_compute_s, peer_exchange_s).
 untimed() {
-  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) skip[i] = ($i == "compute_s" || $i == "exchange_s") }
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) skip[i] = ($i ~ /^(peer_)?(compute|exchange)_s$/) }
            { line = ""; for (i = 1; i <= NF; i++) if (!skip[i]) line = line (line == "" ? "" : ",") $i; print line }' "$1"
 }
 (cd "$work/full" && "${cmd[@]}" "$scene") > "$work/full.log" 2>&1 || { cat "$work/full.log"; fail "the full run failed"; }

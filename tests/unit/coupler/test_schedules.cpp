@@ -21,12 +21,12 @@ namespace {
 class RecordingTransport final : public Transport {
  public:
   RecordingTransport(const Sides& s, double t0) : sides_(s), t0_(t0) {}
-  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to, int tag,
-            const std::string& what) override {
+  void move(std::span<const core::Field* const> from, std::span<core::Field* const> to,
+            std::span<const int> components, int tag, const std::string& what) override {
     const std::string kind = !from.empty() && !to.empty() ? "copy" : !from.empty() ? "send" : "receive";
     log.push_back(kind + " " + what.substr(0, what.find(" of ")) + " [" + stepped() + "]");
     tags.push_back(tag);
-    if (!from.empty() && !to.empty()) memory_.move(from, to, tag, what);
+    if (!from.empty() && !to.empty()) memory_.move(from, to, components, tag, what);
   }
   std::vector<double> trade(const std::vector<double>& mine, const std::string& what) override {
     log.push_back("trade " + what);

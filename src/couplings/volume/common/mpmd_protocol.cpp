@@ -41,6 +41,11 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
            "Lagrangian momentum: lagrangian_momentum | exchange increments: exchange_momentum exchange_energy"}};
 }
 
+FieldUses agreeExchange(const Participant& p, const core::Scene& scene, bool solid, const ExchangeDeclaration& mine) {
+  const ExchangeDeclaration theirs = decodeDeclaration(tradeWithPeer(p, encodeDeclaration(mine), "exchange declaration"));
+  return solid ? agree(scene, mine, theirs) : agree(scene, theirs, mine);
+}
+
 namespace {
 /// True when the environment's `variable` is "<p's name>:<step>".
 bool faultAt(const char* variable, const Participant& p, long step) {

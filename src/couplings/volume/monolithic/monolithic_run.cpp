@@ -25,7 +25,8 @@ int runMonolithic(const core::Scene& scene, const core::Comm& comm, std::ostream
   SolidSide solid(mpm);
   FluidSide fluid(ice, scene);
   InMemoryTransport transport;
-  return runVolumeCoupling(scene, {&solid, &fluid}, transport, comm, log, "mpmice", {}, restart);
+  const FieldUses travel = agree(scene, solidDeclaration(scene), fluidDeclaration(scene));
+  return runVolumeCoupling(scene, {&solid, &fluid, &travel}, transport, comm, log, "mpmice", {}, restart);
 }
 
 }  // namespace mpmice::coupler

@@ -1,6 +1,7 @@
 #include "couplings/volume/run/volume_run.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -27,18 +28,21 @@ namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // The health check of each side present (collective); in an MPMD launch the two programs trade
-// their verdicts, so both stop together (the side that found the violation names it).
-void checkHealth(const Sides& sides, Transport& transport, const core::Comm& comm, const std::string& label,
-                 bool mpmd) {
+// their verdicts, so both stop together (the side that found the violation names it), and with
+// them this process's compute and exchange seconds of the step (`split`): returns the peer's.
+std::array<double, 2> checkHealth(const Sides& sides, Transport& transport, const core::Comm& comm,
+                                  const std::string& label, bool mpmd, std::array<double, 2> split) {
   std::string bad;
   if (sides.solid) bad = mpm::findViolation(sides.solid->solver());
   if (bad.empty() && sides.fluid) bad = ice::findViolation(sides.fluid->solver());
   bad = comm.firstMessage(bad);
-  const bool peerBad = mpmd && transport.trade({bad.empty() ? 0.0 : 1.0}, "health")[0] != 0.0;
+  std::vector<double> peer{0.0, 0.0, 0.0};
+  if (mpmd) peer = transport.trade({bad.empty() ? 0.0 : 1.0, split[0], split[1]}, "health");
   if (!bad.empty()) throw core::HealthError(mpmd ? label + ": " + bad : bad, comm.root());
-  if (peerBad)
+  if (peer[0] != 0.0)
     throw core::HealthError(label + ": stopped: the peer program found a non-physical state (its message names it)",
                             comm.root());
+  return {peer[1], peer[2]};
 }
 }  // namespace
 
@@ -88,6 +92,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   std::unique_ptr<core::CsvWriter> steps;
   if (scene.output.enabled && sides.solid) {
     std::vector<std::string> cols{"step", "time", "dt", "iterations", "converged", "compute_s", "exchange_s"};
+    if (!both) cols.insert(cols.end(), {"peer_compute_s", "peer_exchange_s"});
     for (const auto& f : schedule->measuredFields()) cols.push_back("residual_" + f);
     const std::string path = scene.output.directory + "/" + scene.name + "_coupling.csv";
     if (resumed)
@@ -103,6 +108,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
 
   // 1. Start (a restart then returns both sides, the schedule and the clock to the checkpoint;
   //    in an MPMD launch the two programs first agree that they resume the same step).
+  const double latency = transport.measureLatency(200);  // MPMD: the leaders' message latency
   startCoupling(sides, transport);
   if (!both) {
     const double mine = resumed ? clock[1] : -1.0;
@@ -179,7 +185,9 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     ++n;
     LaunchWatchdog::step(n);
     if (afterStep) afterStep(n);
-    checkHealth(sides, transport, comm, label, !both);
+    const double exchangeStep = transport.seconds() - exchange0;
+    const auto peerSplit =
+        checkHealth(sides, transport, comm, label, !both, {now() - wall0 - exchangeStep, exchangeStep});
     const double exchange = transport.seconds() - exchange0, compute = now() - wall0 - exchange;
     computeTotal += compute;
     iterations += r.iterations;
@@ -191,6 +199,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     }
     if (steps) {
       std::vector<double> row{double(n), t, dt, double(r.iterations), r.converged ? 1.0 : 0.0, compute, exchange};
+      if (!both) row.insert(row.end(), peerSplit.begin(), peerSplit.end());
       row.insert(row.end(), r.residuals.begin(), r.residuals.end());
       steps->row(row);
     }
@@ -224,6 +233,22 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
         << (both ? "in memory" : "rank to rank") << "; " << transport.moves() << " field moves and "
         << transport.trades() << " scalar trades, " << 1e6 * ex / double(std::max(1L, points))
         << " us each on average, waiting for the peer included)\n";
+    if (!both)
+      log << "coupling (" << label << "): message latency " << 1e6 * latency
+          << " us (8 bytes each way between the leaders, median of 200 at the start)\n";
+    log << "coupling (" << label << "): per exchange point (moves, mean wall time each, bytes each):";
+    for (const auto& [tag, pt] : transport.points())
+      log << " " << pt.what << " " << pt.moves << " x " << 1e6 * pt.seconds / double(std::max(1L, pt.moves))
+          << " us, " << pt.bytes / std::max(1L, pt.moves) << " B;";
+    log << "\n";
+    if (sides.travel) {
+      const long long cells = scene.mesh.numCells();
+      log << "coupling (" << label << "): " << 8 * sides.travel->valuesPerCell() * cells
+          << " bytes exchanged per pass over the four points over the whole mesh (declared fields; "
+          << 8 * FieldUses::everything(sides.solids()).valuesPerCell() * cells
+          << " with every field and component); " << transport.bytes() / std::max(1L, n)
+          << " bytes per step moved by this process (" << transport.bytes() << " in " << n << " steps)\n";
+    }
   }
   if (comm.root() && sides.fluid && sides.fluid->solver().semiImplicit()) {
     const long lin = sides.fluid->solver().linearIterationsTotal();

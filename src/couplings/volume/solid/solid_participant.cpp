@@ -9,11 +9,12 @@ namespace mpmice::coupler {
 int runSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
                         const std::string& restart) {
   handshake(p, mpmiceHandshakeSections(scene));
+  const FieldUses travel = agreeExchange(p, scene, true, solidDeclaration(scene));
   mpm::MpmSolver mpm(scene, p.local());
   SolidSide side(mpm);
   const core::Decomposition peer(scene.mesh, p.peerSize(), scene.periodic());
   MpiTransport transport(p, mpm.decomposition(), peer);
-  return runVolumeCoupling(scene, {&side, nullptr}, transport, p.local(), log,
+  return runVolumeCoupling(scene, {&side, nullptr, &travel}, transport, p.local(), log,
                            "mpm_solver, coupled to '" + p.peerName() + "'", [&](long n) { maybeInjectFault(p, n); }, restart);
 }
 
