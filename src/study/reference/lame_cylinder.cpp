@@ -1,8 +1,6 @@
 #include "study/reference/lame_cylinder.h"
 
 #include <cmath>
-#include <filesystem>
-#include <regex>
 #include <stdexcept>
 
 #include "core/io/output_reader.h"
@@ -10,7 +8,6 @@
 
 namespace mpmice::study {
 
-namespace fs = std::filesystem;
 using core::Centering;
 using core::OutputReader;
 
@@ -38,32 +35,6 @@ Annulus annulusFromScene(const std::string& file) {
         a.pAmbient = *r.pressure;
   if (a.pAmbient < 0) throw std::runtime_error(file + ": no outflow boundary or fluid region gives the ambient pressure");
   return a;
-}
-
-namespace {
-std::string lastFile(const fs::path& dir, const std::string& pattern) {
-  const std::regex re(pattern);
-  std::string best;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string n = e.path().filename().string();
-    if (std::regex_match(n, re) && n > best) best = n;
-  }
-  return best.empty() ? "" : (dir / best).string();
-}
-}  // namespace
-
-LastOutput lastOutput(const std::string& dirName, const std::string& scene) {
-  const fs::path dir = dirName.empty() ? fs::path(".") : fs::path(dirName);
-  LastOutput o;
-  o.particles = lastFile(dir, scene + "_[0-9]+\\.h5");
-  o.grid = o.particles;
-  if (o.particles.empty()) {
-    o.particles = lastFile(dir, scene + "_solid_[0-9]+\\.h5");
-    o.grid = lastFile(dir, scene + "_fluid_[0-9]+\\.h5");
-  }
-  if (o.particles.empty() || o.grid.empty())
-    throw std::runtime_error("no output of scene '" + scene + "' in " + dir.string());
-  return o;
 }
 
 LameError lameError(const std::string& dir, const std::string& scene, const Annulus& geo) {

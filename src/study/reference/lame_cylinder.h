@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "study/reference/output_files.h"
+
 namespace mpmice::study {
 
 /// What the exact solution needs from the scene.
@@ -18,13 +20,6 @@ struct Annulus {
 /// region outside the annulus), p_ref from the solid's EOS threshold_pressure. Throws naming the
 /// file when the scene has no solid annulus or no ambient pressure.
 Annulus annulusFromScene(const std::string& sceneFile);
-
-/// The last output step of scene `scene` in `dir` (mpmice: <scene>_NNNNNN.h5; MPMD:
-/// <scene>_solid_NNNNNN.h5 for the particles and <scene>_fluid_NNNNNN.h5 for the grid).
-struct LastOutput {
-  std::string particles, grid;
-};
-LastOutput lastOutput(const std::string& dir, const std::string& scene);
 
 /// Everything the measure computes.
 struct LameError {

@@ -3,6 +3,8 @@
 #include <vector>
 
 #include "study/reference/lame_cylinder.h"
+#include "study/reference/piston.h"
+#include "study/reference/shock_slab.h"
 
 namespace mpmice::study {
 
@@ -14,6 +16,14 @@ const std::vector<Reference>& registry() {
        "Eq. 13: the particle mean of |(sigma_r + sigma_theta) - S| / S against the exact Lame sum of the "
        "scene's solid annulus (benchmarks/coupled/cylinder_lame)",
        [](const RunFiles& r) { return lameError(r.dir, r.name, annulusFromScene(r.scene)).error; }},
+      {"piston",
+       "|p / p_exact - 1| of the trapped gas's pure cells at the last output against the free piston's "
+       "quasi-static adiabat (configs/piston.yaml; exact for a large solid-to-gas density ratio)",
+       [](const RunFiles& r) { return pistonError(r.dir, r.name, r.scene).pressureError; }},
+      {"shock_slab",
+       "|p / p5 - 1| of the reflected plateau's mean pressure at the last output against the rigid-wall "
+       "reflection of the scene's shock (configs/shock_slab.yaml; exact for a large solid-to-gas impedance ratio)",
+       [](const RunFiles& r) { return slabPressureError(r.dir, r.name, r.scene); }},
   };
   return refs;
 }

@@ -1,8 +1,9 @@
 #pragma once
 /// @brief The references a study measures its points against, by name: each takes a finished
 /// run (its folder, its scene file, the scene's name) and gives one error (a finite number >= 0,
-/// smaller is better). Today: `lame_cylinder` (Eq. 13 against the exact Lame solution); the
-/// piston and the flap's reference curve are to come.
+/// smaller is better). Today: `lame_cylinder` (Eq. 13 against the exact Lame solution),
+/// `piston` (the adiabatic piston's pressure) and `shock_slab` (the reflected pressure); the
+/// flap's reference curve is to come.
 #include <functional>
 #include <stdexcept>
 #include <string>

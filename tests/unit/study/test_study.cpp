@@ -15,7 +15,9 @@
 #include "study/key_path.h"
 #include "study/pareto.h"
 #include "study/point_run.h"
+#include "study/reference/piston.h"
 #include "study/reference/references.h"
+#include "study/reference/shock_slab.h"
 #include "study/study_file.h"
 #include "study/study_run.h"
 
@@ -332,12 +334,56 @@ TEST(Pareto, FrontIsTheUndominatedPointsFastestFirst) {
 
 TEST(References, RegistryByNameAndTheValidChoices) {
   EXPECT_EQ(findReference("lame_cylinder").name, "lame_cylinder");
-  EXPECT_EQ(referenceNames(), "lame_cylinder");
+  EXPECT_EQ(findReference("piston").name, "piston");
+  EXPECT_EQ(findReference("shock_slab").name, "shock_slab");
+  EXPECT_EQ(referenceNames(), "lame_cylinder, piston, shock_slab");
   try {
     (void)findReference("flap_reference_curve");
     FAIL() << "an unknown reference was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'flap_reference_curve' is not a reference (valid: lame_cylinder)"),
+    EXPECT_NE(std::string(e.what()).find("'flap_reference_curve' is not a reference (valid: lame_cylinder, piston, shock_slab)"),
               std::string::npos) << e.what();
   }
 }
+
+namespace mpmice::study {
+namespace {
+
+// The exact answers the `piston` and `shock_slab` references compare with, computed from the
+// shipped scenes: the figures their comments (and docs/verification-coupled.md) quote.
+TEST(References, PistonExactAnswerFromTheScene) {
+  const PistonSetup e = pistonSetup(core::loadScene(PISTON_SCENE));
+  EXPECT_DOUBLE_EQ(e.h0, 0.4);
+  EXPECT_DOUBLE_EQ(e.hL0, 0.2);
+  EXPECT_DOUBLE_EQ(e.M, 8900 * 0.4);
+  EXPECT_EQ(e.gas, "air");
+  const PistonExact x = pistonExact(e, 0.02);
+  EXPECT_NEAR(x.s, 0.19639, 1e-5);
+  EXPECT_NEAR(x.v, 9.443, 1e-3);
+  EXPECT_NEAR(x.p, 260.78e3, 10.0);
+  EXPECT_NEAR(x.pL, 38.89e3, 10.0);
+  // A piston that does not move leaves the gas at p0.
+  EXPECT_DOUBLE_EQ(pistonExact(e, 0).p, e.p0);
+}
+
+TEST(References, ShockSlabExactAnswerFromTheScene) {
+  const SlabExact e = slabExact(core::loadScene(SHOCK_SLAB_SCENE));
+  EXPECT_NEAR(e.p5, 1.51988e6, 10.0);
+  EXPECT_NEAR(e.Wr, 347.2, 0.1);
+  EXPECT_NEAR(e.W, 694.38, 0.01);
+  EXPECT_NEAR(e.cSolid, 5813.8, 0.1);
+  EXPECT_NEAR(e.hitTime(), 0.4 / 694.38, 1e-8);
+}
+
+TEST(References, ASceneWithoutTheRegionsIsRefusedNamingTheFile) {
+  try {
+    (void)slabExact(core::loadScene(PISTON_SCENE));
+    FAIL() << "the piston scene has no regions shocked / quiet / slab";
+  } catch (const std::runtime_error& ex) {
+    EXPECT_NE(std::string(ex.what()).find("no region 'shocked'"), std::string::npos) << ex.what();
+    EXPECT_NE(std::string(ex.what()).find("piston.yaml"), std::string::npos) << ex.what();
+  }
+}
+
+}  // namespace
+}  // namespace mpmice::study

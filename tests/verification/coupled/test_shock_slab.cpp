@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "coupled_run.h"
+#include "study/reference/shock_slab.h"
 #include "serial_mpi.h"
 
 namespace mpmice::test {
@@ -32,42 +33,7 @@ core::Scene slabScene(double dx) {
   return s;
 }
 
-/// The exact answers of the scene (ideal gas; states from the regions "shocked" and "quiet").
-struct SlabExact {
-  double gamma = 0, p1 = 0, p2 = 0, p5 = 0, W = 0, Wr = 0, xShock = 0, xWall = 0, cSteel = 0;
-  [[nodiscard]] double hitTime() const { return (xWall - xShock) / W; }
-};
-
-SlabExact exactFor(const core::Scene& s) {
-  SlabExact e;
-  const core::MaterialSpec& air = *s.material("air");
-  const core::MaterialSpec& steel = *s.material("steel");
-  e.gamma = air.eos.get("gamma");
-  const double g = e.gamma, R = (g - 1) * air.specific_heat;
-  const auto& shocked = regionNamed(s, "shocked");
-  const auto& quiet = regionNamed(s, "quiet");
-  e.p1 = *quiet.pressure;
-  const double rho1 = e.p1 / (R * quiet.temperature);
-  e.p2 = *shocked.pressure;
-  const double rho2 = *shocked.density, u2 = shocked.velocity[0];
-  e.W = rho2 * u2 / (rho2 - rho1);  // mass conservation across the incident shock
-  e.xShock = shocked.shape.hi[0];
-  e.xWall = regionNamed(s, "slab").shape.lo[0];
-  // Reflected shock into state 2 bringing the gas to rest: u2 = (p5 - p2) sqrt(A / (p5 + B)).
-  const double A = 2 / ((g + 1) * rho2), B = (g - 1) / (g + 1) * e.p2;
-  double lo = e.p2, hi = 1e3 * e.p2;
-  for (int k = 0; k < 200; ++k) {
-    const double m = 0.5 * (lo + hi);
-    ((m - e.p2) * std::sqrt(A / (m + B)) < u2 ? lo : hi) = m;
-  }
-  e.p5 = 0.5 * (lo + hi);
-  const double r = e.p5 / e.p2;
-  const double rho5 = rho2 * ((g + 1) * r + (g - 1)) / ((g - 1) * r + (g + 1));
-  e.Wr = rho2 * u2 / (rho5 - rho2);
-  const double K = steel.constitutive.get("bulk_modulus"), G = steel.constitutive.get("shear_modulus");
-  e.cSteel = std::sqrt((K + 4 * G / 3) / steel.density);
-  return e;
-}
+using study::SlabExact;
 
 struct SlabResult {
   double plateauMean = 0, plateauMin = 0, plateauMax = 0, frontSpeed = 0;
@@ -76,7 +42,7 @@ struct SlabResult {
 SlabResult runSlab(double dx) {
   CoupledRun run(slabScene(dx));
   const core::Scene& s = run.scene;
-  const SlabExact ex = exactFor(s);
+  const SlabExact ex = study::slabExact(s);
   const double slabEnd = regionNamed(s, "slab").shape.hi[0];
   // Two probes in the slab, a sixth and five sixths through it: the particles nearest them.
   const auto& p = run.mpm.particles();
@@ -111,39 +77,34 @@ SlabResult runSlab(double dx) {
   EXPECT_GT(crossing[1], 0) << "the stress front never reached the second probe";
   out.frontSpeed = (x0[1] - x0[0]) / (crossing[1] - crossing[0]);
   // The reflected plateau: from a quarter of the way behind the reflected shock to two cells off
-  // the slab, pure gas cells only.
-  const double t = run.time(), xr = ex.xWall - ex.Wr * (t - ex.hitTime());
-  const int air = s.materialIndex("air");
-  const auto& theta = run.ice.state().mat[static_cast<std::size_t>(air)].theta;
-  double sum = 0, mn = std::numeric_limits<double>::max(), mx = 0;
-  int count = 0;
+  // the slab, pure gas cells only (the study's `shock_slab` reference measures the same).
   const core::Box& b = run.ice.ownedBox();
+  const auto& theta = run.ice.state().mat[static_cast<std::size_t>(s.materialIndex("air"))].theta;
+  std::vector<double> x, pc, th;
   for (int i = b.lo[0]; i <= b.hi[0]; ++i) {
-    const double x = s.mesh.cellCenter(0, i);
-    if (x < xr + 0.25 * (ex.xWall - xr) || x > ex.xWall - 2 * dx || theta(i, 0, 0) < 0.999) continue;
-    const double pc = run.ice.pressure()(i, 0, 0);
-    sum += pc;
-    mn = std::min(mn, pc);
-    mx = std::max(mx, pc);
-    ++count;
+    x.push_back(s.mesh.cellCenter(0, i));
+    pc.push_back(run.ice.pressure()(i, 0, 0));
+    th.push_back(theta(i, 0, 0));
   }
-  EXPECT_GT(count, 5) << "no reflected plateau at dx " << dx;
-  out.plateauMean = sum / count;
-  out.plateauMin = mn;
-  out.plateauMax = mx;
+  const study::Plateau pl =
+      study::reflectedPlateau(ex, run.time(), dx, x.data(), pc.data(), th.data(), static_cast<int>(x.size()));
+  EXPECT_GT(pl.cells, 5) << "no reflected plateau at dx " << dx;
+  out.plateauMean = pl.mean;
+  out.plateauMin = pl.min;
+  out.plateauMax = pl.max;
   return out;
 }
 
 TEST(ShockOnSteelSlab, ReflectedPressureAndSteelWaveSpeed) {
   const core::Scene scene = core::loadScene(SHOCK_SLAB_SCENE);
-  const SlabExact ex = exactFor(scene);
+  const SlabExact ex = study::slabExact(scene);
   const double dx0 = scene.mesh.spacing()[0];
-  std::printf("exact: p5 %.6g Pa, reflected shock %.4g m/s, steel c_L %.5g m/s\n", ex.p5, ex.Wr, ex.cSteel);
+  std::printf("exact: p5 %.6g Pa, reflected shock %.4g m/s, steel c_L %.5g m/s\n", ex.p5, ex.Wr, ex.cSolid);
   std::vector<double> dxs = {2 * dx0, dx0, 0.5 * dx0}, pErr, cErr;
   for (double dx : dxs) {
     const SlabResult r = runSlab(dx);
     pErr.push_back(std::abs(r.plateauMean - ex.p5) / ex.p5);
-    cErr.push_back(std::abs(r.frontSpeed - ex.cSteel) / ex.cSteel);
+    cErr.push_back(std::abs(r.frontSpeed - ex.cSolid) / ex.cSolid);
     std::printf("dx %.4g: plateau mean %.6g (error %.4f; min %.4g, max %.4g), front speed %.5g (error %.4f)\n", dx,
                 r.plateauMean, pErr.back(), r.plateauMin, r.plateauMax, r.frontSpeed, cErr.back());
   }
