@@ -1,5 +1,6 @@
 #include "couplings/surface/solid/file_load.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -35,7 +36,13 @@ std::vector<FileLoadReport> applyFileLoads(mpm::MpmSolver& mpm, std::ostream& lo
   for (std::size_t l = 0; l < scene.loads.size(); ++l) {
     const core::LoadSpec& ld = scene.loads[l];
     if (ld.type != core::LoadType::File) continue;
-    if (!any) mpm.enableSurfaceForces();
+    if (!any) {
+      // The file loads are the only surface forces of a run alone: start from none (a restart's
+      // checkpoint holds the forces set before it).
+      mpm.enableSurfaceForces();
+      auto& p = mpm.particles();
+      for (int d = 0; d < 3; ++d) std::fill(p.fsurf[d].begin(), p.fsurf[d].end(), 0.0);
+    }
     any = true;
     const std::string what = "loads[" + std::to_string(l) + "] (file " + ld.file + ")";
     const core::ForceExport ex = core::readForceExport(resolve(scene, ld.file));
