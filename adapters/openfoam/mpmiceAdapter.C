@@ -37,6 +37,7 @@ Foam::functionObjects::mpmiceAdapter::mpmiceAdapter
     nu_(0),
     notedNoViscous_(false),
     csv_(),
+    exportPrecision_(12),
     sceneFile_(),
     bridge_(nullptr),
     coupled_(false),
@@ -112,6 +113,13 @@ bool Foam::functionObjects::mpmiceAdapter::read(const dictionary& dict)
     {
         rho_ = dict.lookupOrDefault<scalar>("rho", 1.0);
     }
+    exportPrecision_ = dict.lookupOrDefault<label>("exportPrecision", 12);
+    if (exportPrecision_ < 1 || exportPrecision_ > 17)
+    {
+        FatalIOErrorInFunction(dict)
+            << "mpmiceAdapter: exportPrecision " << exportPrecision_
+            << " must lie in 1..17 (significant digits)" << exit(FatalIOError);
+    }
 
     haveNu_ = false;
     if (dict.found("nu"))
@@ -175,6 +183,60 @@ Foam::functionObjects::mpmiceAdapter::faceForces()
     return tf;
 }
 
+Foam::scalar Foam::functionObjects::mpmiceAdapter::meshDepth() const
+{
+    scalar depth = 1;
+    if (mesh_.nSolutionD() == 2)
+    {
+        const Vector<label>& sol = mesh_.solutionD();
+        const vector span = mesh_.bounds().span();
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (sol[d] < 0) depth = span[d];
+        }
+    }
+    return depth;
+}
+
+void Foam::functionObjects::mpmiceAdapter::exportForces(const vectorField& f) const
+{
+    List<vectorField> centres(Pstream::nProcs()), forces(Pstream::nProcs());
+    centres[Pstream::myProcNo()] = mesh_.boundaryMesh()[patchi_].faceCentres();
+    forces[Pstream::myProcNo()] = f;
+    Pstream::gatherList(centres);
+    Pstream::gatherList(forces);
+    if (!Pstream::master()) return;
+    const fileName dir = time_.globalPath()/"postProcessing"/name()/time_.timeName();
+    mkDir(dir);
+    OFstream os(dir/"patchForces.csv");
+    os.precision(exportPrecision_);
+    os.setf(std::ios::scientific, std::ios::floatfield);
+    os  << "#" << nl
+        << "# mpmiceAdapter patch force export (the format of CFX-Post's data export)" << nl
+        << "# Case: " << time_.globalPath() << nl
+        << "# Patch: " << patchName_ << ", time " << time_.timeName() << " s" << nl
+        << "# Force = rho (p Sf + Sf . (-nu dev(2 sym grad U))), rho " << rho_ << nl;
+    if (mesh_.nSolutionD() == 2)
+    {
+        os  << "# Depth [m]: " << meshDepth() << nl;
+    }
+    os  << "#" << nl
+        << "# The following variables will be output for all locators:" << nl
+        << "# 1 - X [m]" << nl << "# 2 - Y [m]" << nl << "# 3 - Z [m]" << nl
+        << "# 4 - Fluid.Force X [N]" << nl << "# 5 - Fluid.Force Y [N]" << nl
+        << "# 6 - Fluid.Force Z [N]" << nl << "#" << nl;
+    forAll(centres, proc)
+    {
+        forAll(centres[proc], i)
+        {
+            const vector& c = centres[proc][i];
+            const vector& F = forces[proc][i];
+            os  << c.x() << ", " << c.y() << ", " << c.z() << ", "
+                << F.x() << ", " << F.y() << ", " << F.z() << nl;
+        }
+    }
+}
+
 void Foam::functionObjects::mpmiceAdapter::startCoupling()
 {
     if (Pstream::parRun())
@@ -187,16 +249,7 @@ void Foam::functionObjects::mpmiceAdapter::startCoupling()
     List<scalar> fc(3*Cf.size()), pc(3*pts.size());
     forAll(Cf, i) { for (direction d = 0; d < 3; ++d) fc[3*i + d] = Cf[i][d]; }
     forAll(pts, i) { for (direction d = 0; d < 3; ++d) pc[3*i + d] = pts[i][d]; }
-    scalar depth = 1;
-    if (mesh_.nSolutionD() == 2)
-    {
-        const Vector<label>& sol = mesh_.solutionD();
-        const vector span = mesh_.bounds().span();
-        for (direction d = 0; d < 3; ++d)
-        {
-            if (sol[d] < 0) depth = span[d];
-        }
-    }
+    const scalar depth = meshDepth();
     if (twoWay_ && !mesh_.foundObject<pointVectorField>("pointDisplacement"))
     {
         fail("two-way coupling moves the mesh: give constant/dynamicMeshDict a displacementLaplacian motion solver "
@@ -332,6 +385,10 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
         {
             checkpoint();
         }
+    }
+    if (!bridge_ && (time_.writeTime() || time_.value() > time_.endTime().value() - 0.5*time_.deltaTValue()))
+    {
+        exportForces(f);
     }
     const vector F = patchForce(f);
     if (csv_.valid())

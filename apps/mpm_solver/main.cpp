@@ -10,7 +10,9 @@
 //    (MPM-ICE: src/couplings/volume/solid; a surface coupling with OpenFOAM: src/couplings/surface/solid).
 // 2. Alone: run the scene (src/mpm/solver/standalone_run.h: progress lines, HDF5/XDMF output,
 //    the energies CSV, probes).
+#include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -19,6 +21,7 @@
 #include "coupler/launch/output_lock.h"
 #include "coupler/launch/participant.h"
 #include "couplings/volume/solid/solid_participant.h"
+#include "couplings/surface/solid/file_load.h"
 #include "couplings/surface/solid/surface_solid_participant.h"
 #include "core/health/health.h"
 #include "core/io/log_file.h"
@@ -55,6 +58,11 @@ int main(int argc, char** argv) {
     localRoot = participant.local().root();
     const auto lock = coupler::lockParticipantOutput(participant, scene, "mpm_solver");
     logFile = core::LogFile::teeProgramOutput(participant.local(), scene, "mpm_solver");  // after the lock
+    const bool fileLoads = std::any_of(scene.loads.begin(), scene.loads.end(),
+                                       [](const core::LoadSpec& l) { return l.type == core::LoadType::File; });
+    if (participant.coupled() && fileLoads)
+      throw std::invalid_argument("loads: a file load (the sequential workflow) applies to mpm_solver run alone; "
+                                  "a coupled run gets its fluid forces from the peer (remove the file load or the peer)");
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {
@@ -74,7 +82,9 @@ int main(int argc, char** argv) {
       }
       return coupler::runSolidParticipant(participant, scene, std::cout, line.restart);
     }
-    return mpm::runStandalone(scene, participant.local(), std::cout, line.restart);  // 2.
+    std::function<void(mpm::MpmSolver&)> prepare;
+    if (fileLoads) prepare = [](mpm::MpmSolver& mpm) { (void)coupler::applyFileLoads(mpm, std::cout); };
+    return mpm::runStandalone(scene, participant.local(), std::cout, line.restart, prepare);  // 2.
   } catch (const core::SceneError& ex) {
     if (session.world().root()) std::fprintf(stderr, "%s\n", ex.what());
     return 1;

@@ -54,6 +54,13 @@ inline constexpr double kJ2ReturnTolerance = 1e-13;
 /// within it; a cap too small would fail them).
 inline constexpr int kJ2MaxIterations = 50;
 
+/// Crushable foam return (crushable_foam.cpp): relative tolerance on the multiplier's bracket and
+/// on the consistency residual (|r| <= tol * Y), and the iteration cap of the safeguarded secant.
+/// Pinned by: tests/unit/mpm/test_constitutive.cpp, CrushableFoam.* (closed forms to 1e-9 relative;
+/// a tolerance looser than about 1e-8 fails them).
+inline constexpr double kFoamReturnTolerance = 1e-13;
+inline constexpr int kFoamReturnMaxIterations = 200;
+
 /// Tolerance, as a fraction of the mesh extent, with which a solid region may touch a non-symmetry
 /// mesh face before particle generation rejects it.
 /// Pinned by: no test (the scene tests place solids well inside or on symmetry faces).

@@ -27,6 +27,11 @@ std::vector<ParamInfo> elasticConstants() {
   };
 }
 
+TableInfo hardeningTable() {
+  return {"hardening", {"plastic_strain", "stress"},
+          "flow stress [Pa] against equivalent plastic strain (piecewise linear; strains start at 0 and increase)"};
+}
+
 std::vector<ParamInfo> with(std::vector<ParamInfo> a, const std::vector<ParamInfo>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
@@ -76,6 +81,15 @@ void readTable(ModelSpec& m, const TableInfo& t, const YamlValue& v) {
                                     formatNumber(x[i]) + ") is not above the one before");
 }
 
+/// j2_plasticity's parameters (cowper_symonds adds its rate constants).
+std::vector<ParamInfo> j2Params() {
+  return with(elasticConstants(),
+              {required("yield_stress", Range::positive(), "initial yield stress [Pa]"),
+               optional("hardening_modulus", 0, Range::nonNegative(),
+                        "linear isotropic hardening modulus [Pa] (or the `hardening` table)"),
+               optional("failure_strain", 0, Range::nonNegative(), "equivalent plastic strain at failure (0 = no failure)")});
+}
+
 }  // namespace
 
 std::vector<std::string> ModelInfo::keys() const {
@@ -105,15 +119,26 @@ const ModelFamily& constitutiveModels() {
            elasticConstants(), {}},
           {"neo_hookean", "compressible neo-Hookean hyperelasticity", elasticConstants(), {}},
           {"j2_plasticity", "von Mises plasticity with isotropic hardening, radial return",
+           j2Params(), {hardeningTable()}},
+          {"cowper_symonds",
+           "von Mises plasticity whose flow stress is scaled by the Cowper-Symonds factor 1 + (rate/C)^(1/p) "
+           "(rate: the equivalent strain rate)",
+           with(j2Params(), {required("rate_c", Range::positive(), "Cowper-Symonds C [1/s]"),
+                             required("rate_p", Range::positive(), "Cowper-Symonds p")}),
+           {hardeningTable()}},
+          {"crushable_foam",
+           "Deshpande-Fleck crushable foam: elliptic yield surface in mean and von Mises stress, volumetric "
+           "hardening to densification",
            with(elasticConstants(),
-                {required("yield_stress", Range::positive(), "initial yield stress [Pa]"),
-                 optional("hardening_modulus", 0, Range::nonNegative(),
-                          "linear isotropic hardening modulus [Pa] (or the `hardening` table)"),
-                 optional("failure_strain", 0, Range::nonNegative(),
-                          "equivalent plastic strain at failure (0 = no failure)")}),
-           {{"hardening", {"plastic_strain", "stress"},
-             "flow stress [Pa] against equivalent plastic strain (piecewise linear; strains start at 0 "
-             "and increase)"}}},
+                {required("plateau_stress", Range::positive(), "plateau (initial) yield stress sigma_p [Pa]"),
+                 required("densification_strain", Range::positive(),
+                          "densification strain eps_D = -(9 + alpha^2)/(3 alpha^2) ln(rho_foam/rho_solid)"),
+                 optional("plastic_poissons_ratio", 0, Range::open(-1.0, 0.5),
+                          "plastic Poisson's ratio nu_p (sets alpha)"),
+                 optional("hardening_gamma", 0, Range::nonNegative(), "linear hardening gamma [Pa]"),
+                 required("hardening_alpha2", Range::positive(), "densification hardening alpha_2 [Pa]"),
+                 optional("hardening_beta", 1, Range::positive(), "densification exponent beta")}),
+           {}},
       }};
   return f;
 }

@@ -46,8 +46,9 @@ inline constexpr std::array<std::pair<CouplingMode, std::string_view>, 2> kCoupl
 enum class AccelerationType { None, Constant, Aitken, IqnIls };
 /// coupling.convergence[].type (coupler/convergence/convergence_measure.h).
 enum class MeasureType { Absolute, Relative, ResidualRelative };
-/// loads[].type: a pressure on a solid's surface, or a traction.
-enum class LoadType { Pressure, Traction };
+/// loads[].type: a pressure on a solid's surface, a traction, or point forces read from a file
+/// (a fluid code's export, mapped onto the solid's surface particles).
+enum class LoadType { Pressure, Traction, File };
 
 inline constexpr std::array<std::pair<AccelerationType, std::string_view>, 4> kAccelerationNames{{
     {AccelerationType::None, "none"},
@@ -60,9 +61,10 @@ inline constexpr std::array<std::pair<MeasureType, std::string_view>, 3> kMeasur
     {MeasureType::Relative, "relative"},
     {MeasureType::ResidualRelative, "residual_relative"},
 }};
-inline constexpr std::array<std::pair<LoadType, std::string_view>, 2> kLoadNames{{
+inline constexpr std::array<std::pair<LoadType, std::string_view>, 3> kLoadNames{{
     {LoadType::Pressure, "pressure"},
     {LoadType::Traction, "traction"},
+    {LoadType::File, "file"},
 }};
 
 template <class E, std::size_t N>

@@ -122,7 +122,9 @@ struct BoundarySpec {
 
 /// A load on solid particles: "traction" (vector per unit area) or "pressure" (normal to the
 /// particle set's surface, pointing away from `center`), on the particles of `material` inside
-/// `shape`, ramped linearly over `ramp` seconds from `start`.
+/// `shape`, ramped linearly over `ramp` seconds from `start`; or "file": point forces read from a
+/// fluid code's export (core/io/force_export_file.h), mapped conservatively onto the surface
+/// particles of `material` and held from t = 0 (src/couplings/surface/solid/file_load.h).
 struct LoadSpec {
   LoadType type = LoadType::Pressure;
   std::string material;
@@ -131,6 +133,11 @@ struct LoadSpec {
   double pressure = 0;
   RealVect center{0, 0, 0};
   double start = 0, ramp = 0;
+  std::string file;                                     // file loads: path (relative to the scene file)
+  InterfaceMapping mapping = InterfaceMapping::Rbf;     // file loads
+  double rbf_support = 0;                               // file loads: 0 = thin-plate spline
+  double depth = 0;                                     // file loads, 2D: 0 = the file's, else 1 m
+  RealVect moment_center{0, 0, 0};                      // file loads: the reported moment's origin
   SourceLoc where;
   bool operator==(const LoadSpec&) const = default;
 };

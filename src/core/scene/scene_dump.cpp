@@ -226,6 +226,12 @@ void loadsAndSources(std::ostream& o, const Scene& s) {
   if (!s.loads.empty()) {
     o << "loads:\n";
     for (const auto& l : s.loads) {
+      if (l.type == LoadType::File) {
+        o << "  - {type: file, material: " << quote(l.material) << ", file: " << quote(l.file)
+          << ", mapping: " << name(l.mapping) << ", rbf_support: " << num(l.rbf_support) << ", depth: " << num(l.depth)
+          << ", moment_center: " << vec(l.moment_center, dim) << "}\n";
+        continue;
+      }
       o << "  - {type: " << name(l.type) << ", material: " << quote(l.material) << ", shape: " << shape(l.shape, dim);
       if (l.type == LoadType::Pressure) o << ", pressure: " << num(l.pressure) << ", center: " << vec(l.center, dim);
       else o << ", traction: " << vec(l.traction, dim);

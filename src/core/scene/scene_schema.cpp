@@ -464,6 +464,7 @@ class SchemaReader {
     LoadSpec l;
     l.where = v.loc();
     l.type = m.required("type").option(kLoadNames, "load type");
+    if (l.type == LoadType::File) return readFileLoad(m, l);
     const std::vector<std::string> pressureKeys{"type", "material", "shape", "pressure", "center", "start", "ramp"};
     const std::vector<std::string> tractionKeys{"type", "material", "shape", "traction", "start", "ramp"};
     const bool pressure = l.type == LoadType::Pressure;
@@ -480,6 +481,22 @@ class SchemaReader {
     }
     l.start = m.number("start", 0.0, Range::nonNegative());  // [s]
     l.ramp = m.number("ramp", 0.0, Range::nonNegative());    // [s], 0 = at once
+    return l;
+  }
+
+  // Point forces from a fluid code's export file, held on the solid's surface particles.
+  LoadSpec readFileLoad(const YamlMap& m, LoadSpec l) const {
+    m.allow({"type", "material", "file", "mapping", "rbf_support", "depth", "moment_center"},
+            "a file load takes type, material, file, mapping, rbf_support, depth, moment_center "
+            "(it acts on the whole surface of the material from t = 0)");
+    const MaterialKind solid = MaterialKind::Solid;
+    l.material = materialRef(m.required("material"), &solid, "loads act on solid particles");
+    l.file = m.required("file").string();
+    if (l.file.empty()) m.required("file").fail("expected the path of a force export file");
+    l.mapping = m.option("mapping", l.mapping, kInterfaceMappingNames, "interface mapping");
+    l.rbf_support = m.number("rbf_support", l.rbf_support, Range::nonNegative());  // [m], 0 = thin-plate spline
+    l.depth = m.number("depth", 0.0, Range::nonNegative());                          // [m], 0 = the file's
+    l.moment_center = m.vector("moment_center", dim_, {0, 0, 0});
     return l;
   }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/scene/model_catalog.h"
+#include "mpm/material/crushable_foam.h"
 #include "mpm/material/j2_plasticity.h"
 #include "mpm/material/linear_elastic.h"
 #include "mpm/material/neo_hookean.h"
@@ -67,6 +68,16 @@ struct Entry {
   Factory make;
 };
 
+/// j2_plasticity and cowper_symonds: linear hardening or the hardening table, failure strain.
+std::unique_ptr<J2Plasticity> makeJ2(const core::ModelSpec& s, const std::string& w) {
+  std::vector<double> te, ts;
+  if (auto it = s.tables.find("plastic_strain"); it != s.tables.end()) te = it->second;
+  if (auto it = s.tables.find("stress"); it != s.tables.end()) ts = it->second;
+  const double sy = te.empty() ? modelParam(s, "yield_stress", w) : modelParam(s, "yield_stress", 0.0);
+  return std::make_unique<J2Plasticity>(ElasticConstants::fromSpec(s, w), sy, modelParam(s, "hardening_modulus", 0.0),
+                                        modelParam(s, "failure_strain", 0.0), te, ts);
+}
+
 // The one registry of constitutive models, keyed by scene name.
 const std::vector<Entry>& registry() {
   static const std::vector<Entry> r = {
@@ -82,13 +93,24 @@ const std::vector<Entry>& registry() {
        }},
       {"j2_plasticity",
        [](const core::ModelSpec& s, const std::string& w) {
-         std::vector<double> te, ts;
-         if (auto it = s.tables.find("plastic_strain"); it != s.tables.end()) te = it->second;
-         if (auto it = s.tables.find("stress"); it != s.tables.end()) ts = it->second;
-         const double sy = te.empty() ? modelParam(s, "yield_stress", w) : modelParam(s, "yield_stress", 0.0);
-         return std::unique_ptr<ConstitutiveModel>(std::make_unique<J2Plasticity>(
-             ElasticConstants::fromSpec(s, w), sy, modelParam(s, "hardening_modulus", 0.0),
-             modelParam(s, "failure_strain", 0.0), te, ts));
+         return std::unique_ptr<ConstitutiveModel>(makeJ2(s, w));
+       }},
+      {"cowper_symonds",
+       [](const core::ModelSpec& s, const std::string& w) {
+         auto m = makeJ2(s, w);
+         m->setRateDependence(modelParam(s, "rate_c", w), modelParam(s, "rate_p", w));
+         return std::unique_ptr<ConstitutiveModel>(std::move(m));
+       }},
+      {"crushable_foam",
+       [](const core::ModelSpec& s, const std::string& w) {
+         CrushableFoamParams f;
+         f.plateau = modelParam(s, "plateau_stress", w);
+         f.densification = modelParam(s, "densification_strain", w);
+         f.plasticPoisson = modelParam(s, "plastic_poissons_ratio", 0.0);
+         f.gamma = modelParam(s, "hardening_gamma", 0.0);
+         f.alpha2 = modelParam(s, "hardening_alpha2", w);
+         f.beta = modelParam(s, "hardening_beta", 1.0);
+         return std::unique_ptr<ConstitutiveModel>(std::make_unique<CrushableFoam>(ElasticConstants::fromSpec(s, w), f));
        }},
   };
   return r;

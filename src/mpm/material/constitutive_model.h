@@ -7,7 +7,8 @@
 /// gradient F = (I + dt L) F_old and its new volume V = V0 det F. A model updates the Cauchy
 /// stress (and its history: plastic strain, failure) and adds the step's stress work to `work`.
 ///
-/// Scene names: linear_elastic, neo_hookean, j2_plasticity (parameters: see each header).
+/// Scene names: linear_elastic, neo_hookean, j2_plasticity, cowper_symonds (j2_plasticity.h),
+/// crushable_foam (parameters: see each header).
 /// An unknown name is an error listing the valid names.
 #include <cstddef>
 #include <memory>

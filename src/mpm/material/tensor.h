@@ -59,6 +59,26 @@ inline Sym3 jaumannSpin(const Mat3& L, const Sym3& s) {
     }
   return {R[0][0], R[1][1], R[2][2], R[0][1], R[1][2], R[0][2]};
 }
+/// The hypoelastic trial state of a step (Jaumann rate): the rate of deformation D = sym L, the
+/// mean stress and the deviator after dt with bulk modulus K and shear modulus G.
+struct ElasticTrial {
+  Sym3 D;
+  double mean;
+  Sym3 dev;
+};
+inline ElasticTrial elasticTrial(const Mat3& L, const Sym3& s, double K, double G, double dt) {
+  ElasticTrial t;
+  t.D = symPart(L);
+  const Sym3 spin = jaumannSpin(L, s);
+  const double trD = trace(t.D), oldMean = trace(s) / 3.0;
+  t.mean = oldMean + dt * K * trD;
+  for (int k = 0; k < 6; ++k) {
+    const double sd = s[k] - (k < 3 ? oldMean : 0.0);
+    const double dd = t.D[k] - (k < 3 ? trD / 3.0 : 0.0);
+    t.dev[k] = sd + dt * (2.0 * G * dd + spin[k]);
+  }
+  return t;
+}
 /// Stress work of one particle over a step, midpoint rule: V (s_old + s_new)/2 : D dt.
 inline double stressWork(const Sym3& sOld, const Sym3& sNew, const Sym3& D, double vol, double dt) {
   Sym3 m;

@@ -61,6 +61,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   for (std::size_t l = 0; l < scene_.loads.size(); ++l) {
     const auto& ld = scene_.loads[l];
     const int mat = loadMaterial(scene_, l, models_);
+    if (ld.type == core::LoadType::File) continue;  // held in fsurf (couplings/surface/solid/file_load.h)
     for (std::size_t i = 0; i < p_.size(); ++i)
       if (p_.material[i] == mat &&
           contains(ld.shape, {p_.x[0][i], p_.x[1][i], p_.x[2][i]}, mesh.dim()))

@@ -14,7 +14,8 @@
 
 namespace mpmice::mpm {
 
-int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log, const std::string& restart) {
+int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log, const std::string& restart,
+                  const std::function<void(MpmSolver&)>& prepare) {
   MpmSolver solver(scene, comm);
   core::RunCheckpoints checkpoints(scene, comm, scene.name, "mpm_solver", restart, &log);
   const core::CheckpointData* resumed = checkpoints.resumed();
@@ -28,6 +29,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
         << scene.mpm.update << ", flip: " << scene.mpm.flip << ", damping: " << scene.mpm.damping
         << " 1/s, cfl: " << scene.time.cfl << "\n"
         << std::flush;
+  if (prepare) prepare(solver);
   // Output (collective) and the energies CSV (flushed row by row).
   std::unique_ptr<MpmOutput> output;
   std::unique_ptr<core::CsvWriter> csv;

@@ -9,6 +9,7 @@
 /// step in <directory>/<scene>_probes.csv. Checkpoints (output.checkpoint_interval) hold the
 /// solver, the output schedule, the XDMF index and the CSV lengths; `restart` (a checkpoint file
 /// or an output directory, `--restart PATH`) resumes from one and continues the same series.
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -17,8 +18,12 @@
 
 namespace mpmice::mpm {
 
+class MpmSolver;
+
 /// Runs the scene to its end on `comm`, printing to `log` (rank 0); returns the exit status.
+/// `prepare` (optional, collective) is called once on the solver before the first step (and
+/// after a restart's checkpoint is loaded): mpm_solver sets the scene's file loads there.
 int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream& log,
-                  const std::string& restart = "");
+                  const std::string& restart = "", const std::function<void(MpmSolver&)>& prepare = {});
 
 }  // namespace mpmice::mpm

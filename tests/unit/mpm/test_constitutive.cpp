@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "mpm/material/constitutive_model.h"
+#include "mpm/material/crushable_foam.h"
 #include "mpm/material/j2_plasticity.h"
 #include "core/material/solid_bulk_eos.h"
 #include "mpm/particles/particle_set.h"
@@ -132,4 +134,209 @@ TEST(SolidBulkEos, ContinuousAndInvertible) {
     EXPECT_NEAR(eos.pressure(eos.density(p)), p, 1e-8 * p + 1e-6);
   EXPECT_GT(eos.specificVolume(1.0), eos.specificVolume(1e5));  // tension branch -> larger v
   EXPECT_THROW(core::SolidBulkEos(0, 1, 1), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------- the slides' models (issue 16)
+namespace {
+
+/// Drives one particle in uniaxial STRESS: axial rate d, the lateral rates found each step (secant
+/// on a copy of the particle) so that sigma_yy = sigma_zz = 0 to 1e-9 of the axial stress.
+/// Returns the axial strain sum d dt.
+double uniaxialStress(const ConstitutiveModel& m, ParticleSet& p, double d, double dt, int n) {
+  double lat = 0;
+  for (int s = 0; s < n; ++s) {
+    auto trial = [&](double l, ParticleSet& q) {
+      q = p;
+      const double L[9] = {d, 0, 0, 0, l, 0, 0, 0, l};
+      strain(m, q, L, dt, 1);
+      return q.stress[kYY][0];
+    };
+    ParticleSet q;
+    double l0 = lat, r0 = trial(l0, q), l1 = lat - 0.1 * d - 1e-12, r1 = trial(l1, q);
+    for (int it = 0; it < 60 && std::fabs(r1) > 1e-9 * std::fabs(q.stress[kXX][0]) + 1e-6; ++it) {
+      const double l2 = l1 - r1 * (l1 - l0) / (r1 - r0);
+      l0 = l1;
+      r0 = r1;
+      l1 = l2;
+      r1 = trial(l1, q);
+    }
+    lat = l1;
+    p = q;
+  }
+  return d * dt * n;
+}
+
+/// Root of f on [a, b] (f(a), f(b) of opposite signs) by bisection: the tests' own solver of
+/// the closed forms, independent of the models' returns.
+template <class F>
+double bisect(F f, double a, double b) {
+  double fa = f(a);
+  for (int it = 0; it < 200; ++it) {
+    const double m = 0.5 * (a + b), fm = f(m);
+    if ((fm > 0) == (fa > 0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+// An aluminium foam of relative density ~0.1 (LS-DYNA *MAT_154 style, the slides' foam layer):
+// E 100 MPa, nu 0.05, plateau 1.5 MPa, eps_D from rho*/rho_s = 0.1 and alpha = 2.12.
+constexpr double kFoamE = 100e6, kFoamNu = 0.05, kSp = 1.5e6, kGamma = 2e6, kAlpha2 = 4e6, kBeta = 2;
+core::ModelSpec foamSpec(double plasticPoisson) {
+  core::ModelSpec m;
+  m.type = "crushable_foam";
+  const double a2 = 9 * (1 - 2 * plasticPoisson) / (2 * (1 + plasticPoisson));
+  m.params = {{"youngs_modulus", kFoamE}, {"poissons_ratio", kFoamNu},
+              {"bulk_modulus", kFoamE / (3 * (1 - 2 * kFoamNu))}, {"shear_modulus", kFoamE / (2 * (1 + kFoamNu))},
+              {"plateau_stress", kSp}, {"densification_strain", -(9 + a2) / (3 * a2) * std::log(0.1)},
+              {"plastic_poissons_ratio", plasticPoisson}, {"hardening_gamma", kGamma},
+              {"hardening_alpha2", kAlpha2}, {"hardening_beta", kBeta}};
+  return m;
+}
+double foamY(const core::ModelSpec& s, double e) {
+  const double x = e / s.params.at("densification_strain");
+  if (x >= 1) return 1e300;  // densified
+  return kSp + kGamma * x + kAlpha2 * std::log(1 / (1 - std::pow(x, kBeta)));
+}
+
+}  // namespace
+
+TEST(CrushableFoam, UniaxialCrushFollowsTheClosedForm) {
+  // Uniaxial stress: sigma_hat = |sigma|, and eps_hat is the axial plastic strain, so
+  // |sigma| = Y(|eps| - |sigma| / E) along the whole crush, plateau to densification.
+  for (const double nup : {0.0, 0.2}) {
+    const auto s = foamSpec(nup);
+    auto m = createConstitutiveModel(s, "foam");
+    auto p = one();
+    const double epsD = s.params.at("densification_strain");
+    double eps = 0, worst = 0;
+    for (int stage = 0; stage < 80; ++stage) {
+      eps += uniaxialStress(*m, p, -1.0, 5e-3, 10);  // 0.05 of compression (log strain) per stage
+      const double sig = -p.stress[kXX][0];
+      const double e = -eps;
+      const double exact = bisect([&](double x) { return x - foamY(s, e - x / kFoamE); }, 0.0, e * kFoamE);
+      worst = std::max(worst, std::fabs(sig - exact) / exact);
+      if (p.eqps[0] > 0.9 * epsD) break;
+    }
+    EXPECT_LT(worst, 1e-7) << "nu_p " << nup;
+    std::printf("uniaxial crush, nu_p %.1f: max |sigma - closed form| / closed form %.2e to eps_hat %.3f (eps_D %.3f), "
+                "sigma %.3e Pa\n", nup, worst, p.eqps[0], epsD, -p.stress[kXX][0]);
+    EXPECT_GT(p.eqps[0], 0.5 * epsD) << "crushed well into densification";
+    EXPECT_NEAR(p.stress[kYY][0], 0.0, 1e-6 * std::fabs(p.stress[kXX][0]));
+  }
+}
+
+TEST(CrushableFoam, HydrostaticCrushFollowsTheClosedForm) {
+  // Pure compression: |sigma_m| = Y(eps_hat) sqrt(c) / alpha, eps_hat = (|eps_v| - |sigma_m| / K) sqrt(c) / alpha,
+  // c = 1 + alpha^2 / 9; the deviator stays 0.
+  const auto s = foamSpec(0.0);
+  auto m = createConstitutiveModel(s, "foam");
+  const CrushableFoam& foam = dynamic_cast<const CrushableFoam&>(*m);
+  const double a = foam.alpha(), c = 1 + a * a / 9, Kf = s.params.at("bulk_modulus");
+  EXPECT_NEAR(a, std::sqrt(4.5), 1e-15);
+  auto p = one();
+  const double d = -1.0 / 3, dt = 5e-3, L[9] = {d, 0, 0, 0, d, 0, 0, 0, d};
+  double ev = 0, worst = 0;
+  for (int stage = 0; stage < 100; ++stage) {
+    strain(*m, p, L, dt, 10);
+    ev += 3 * d * dt * 10;
+    const double pm = -p.stress[kXX][0];
+    const double exact =
+        bisect([&](double x) { return x - foamY(s, (-ev - x / Kf) * std::sqrt(c) / a) * std::sqrt(c) / a; }, 0.0,
+               -ev * Kf);
+    worst = std::max(worst, std::fabs(pm - exact) / exact);
+    EXPECT_NEAR(p.stress[kXY][0], 0.0, 1e-9 * pm);
+    EXPECT_NEAR(p.stress[kXX][0], p.stress[kZZ][0], 1e-9 * pm);
+    if (p.eqps[0] > 0.9 * s.params.at("densification_strain")) break;
+  }
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(p.eqps[0], 0.5 * s.params.at("densification_strain"));
+  std::printf("hydrostatic crush: max |p - closed form| / closed form %.2e to eps_v %.3f, eps_hat %.3f, p %.3e Pa\n",
+              worst, ev, p.eqps[0], -p.stress[kXX][0]);
+  // Below the yield surface the response is elastic: a small first step gives K eps_v.
+  auto q = one();
+  const double Ls[9] = {-1e-5, 0, 0, 0, -1e-5, 0, 0, 0, -1e-5};
+  strain(*m, q, Ls, 1.0, 1);
+  EXPECT_NEAR(q.stress[kXX][0], -3e-5 * Kf, 1e-9 * 3e-5 * Kf);
+  EXPECT_EQ(q.eqps[0], 0.0);
+}
+
+TEST(CowperSymonds, YieldStressScalesWithTheRateAtTwoRates) {
+  // Uniaxial strain at rate d: equivalent strain rate 2 d / 3; on the surface q = (sy0 + H eps_p)
+  // (1 + (2 d / (3 C))^(1/p)). The rates 10 and 1000 1/s with C 40.4, p 5 (mild steel's pair).
+  core::ModelSpec s = spec("cowper_symonds");
+  s.params["rate_c"] = 40.4;
+  s.params["rate_p"] = 5;
+  auto m = createConstitutiveModel(s, "polymer");
+  EXPECT_STREQ(m->name(), "cowper_symonds");
+  double qs[2];
+  int k = 0;
+  for (const double rate : {10.0, 1000.0}) {
+    auto p = one();
+    const double L[9] = {rate, 0, 0, 0, 0, 0, 0, 0, 0};
+    strain(*m, p, L, 1e-2 / rate / 40, 40);  // to 1e-2, past yield at both rates
+    const double sx = p.stress[0][0], sy = p.stress[1][0];
+    const double q = std::fabs(sx - sy);  // uniaxial strain: sigma_yy = sigma_zz
+    const double factor = 1 + std::pow(2 * rate / 3 / 40.4, 1.0 / 5);
+    EXPECT_GT(p.eqps[0], 0);
+    EXPECT_NEAR(q, (250e6 + 1e9 * p.eqps[0]) * factor, 1e-9 * q) << "rate " << rate;
+    std::printf("cowper_symonds at %g 1/s: q %.6e Pa, closed form %.6e Pa (factor %.4f, eps_p %.4e)\n", rate, q,
+                (250e6 + 1e9 * p.eqps[0]) * factor, factor, p.eqps[0]);
+    qs[k++] = q;
+  }
+  EXPECT_GT(qs[1], 1.3 * qs[0]) << "the faster test flows at the higher stress";
+  s.params["rate_c"] = 0;
+  EXPECT_THROW((void)createConstitutiveModel(s, "polymer"), std::invalid_argument);
+}
+
+TEST(J2Plasticity, PiecewiseLinearWithFailureFollowsTheTableToFailure) {
+  // The PVC of the underwater case: a tabulated curve (yield 45 MPa, hardening to 60 MPa at
+  // eps_p 0.1) and failure at eps_p 0.15. Uniaxial strain at constant rate: on the surface q is
+  // the table at eps_p (and, once eps_p passes 0.1, its last slope), the mean stress stays
+  // elastic K eps; after failure no deviator, compression kept, tension dropped.
+  const double Ep = 3e9, nup = 0.38, Kp = Ep / (3 * (1 - 2 * nup)), Gp = Ep / (2 * (1 + nup));
+  core::ModelSpec s;
+  s.type = "j2_plasticity";
+  s.params = {{"bulk_modulus", Kp}, {"shear_modulus", Gp}, {"yield_stress", 45e6}, {"failure_strain", 0.15}};
+  s.tables = {{"plastic_strain", {0, 0.02, 0.1}}, {"stress", {45e6, 55e6, 60e6}}};
+  auto m = createConstitutiveModel(s, "pvc");
+  auto table = [](double e) {
+    if (e <= 0.02) return 45e6 + e * 10e6 / 0.02;
+    return 55e6 + (e - 0.02) * 5e6 / 0.08;  // extrapolated with the last slope beyond 0.1
+  };
+  auto p = one();
+  const double d = 1e-3, L[9] = {-d, 0, 0, 0, 0, 0, 0, 0, 0};
+  double eps = 0;
+  bool failedSeen = false;
+  for (int step = 0; step < 400; ++step) {
+    const double before = p.eqps[0];
+    strain(*m, p, L, 1.0, 1);
+    eps += d;
+    const double mean = (p.stress[0][0] + p.stress[1][0] + p.stress[2][0]) / 3;
+    const double q = std::fabs(p.stress[0][0] - p.stress[1][0]);
+    if (p.failed[0] == 0.0) {
+      if (p.eqps[0] > 0) {
+        EXPECT_NEAR(q, table(p.eqps[0]), 1e-9 * q) << "step " << step;
+      }
+      EXPECT_NEAR(mean, -Kp * eps, 1e-9 * Kp * eps);
+    } else {
+      if (!failedSeen) {
+        EXPECT_LT(before, 0.15) << "fails in the step that crosses the failure strain";
+      }
+      failedSeen = true;
+      EXPECT_GE(p.eqps[0], 0.15);
+      EXPECT_EQ(q, 0.0);
+      EXPECT_NEAR(mean, -Kp * eps, 1e-9 * Kp * eps) << "compression kept after failure";
+    }
+  }
+  ASSERT_TRUE(failedSeen);
+  // Uniaxial strain: eps_p follows the axial strain as (2/3) of (eps - elastic part); at failure
+  // the axial strain is near 0.15 * 3/2 + 2 sy / (3 * 2G).
+  const double L2[9] = {2 * d, 0, 0, 0, 0, 0, 0, 0, 0};
+  strain(*m, p, L2, 1.0, 300);  // back into tension: the failed particle carries nothing
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(p.stress[k][0], 0.0);
 }

@@ -294,6 +294,29 @@ TEST(SceneParse, DumpParsesBackToAnEqualScene) {
   expectRoundTrip(k3D);
 }
 
+// The slides' models and the file load (issue 16) survive the dump.
+TEST(SceneParse, SlidesModelsAndFileLoadRoundTrip) {
+  const std::string text = R"(
+mesh: {dim: 2, lower: [0, 0], upper: [1, 1], spacing: 0.05}
+time: {end: 1e-3}
+materials:
+  - {name: foam, kind: solid, density: 270, model: {type: crushable_foam, youngs_modulus: 1e8, poissons_ratio: 0.05,
+     plateau_stress: 1.5e6, densification_strain: 2.3, hardening_alpha2: 4e6}}
+  - {name: polymer, kind: solid, density: 1200, model: {type: cowper_symonds, youngs_modulus: 2e9, poissons_ratio: 0.35,
+     yield_stress: 40e6, rate_c: 100, rate_p: 4}}
+geometry:
+  - {shape: {type: box, lo: [0.1, 0.1], hi: [0.4, 0.4]}, material: foam}
+  - {shape: {type: box, lo: [0.6, 0.6], hi: [0.9, 0.9]}, material: polymer}
+loads:
+  - {type: file, material: foam, file: forces.csv, mapping: nearest_neighbor, depth: 0.1, moment_center: [0.25, 0.1]}
+)";
+  expectRoundTrip(text);
+  const Scene s = parseScene(text, "scene.yaml");
+  EXPECT_DOUBLE_EQ(s.materials[0].constitutive.get("plastic_poissons_ratio"), 0.0);  // defaults filled in
+  EXPECT_DOUBLE_EQ(s.materials[0].constitutive.get("hardening_beta"), 1.0);
+  EXPECT_EQ(s.loads[0].moment_center, (RealVect{0.25, 0.1, 0}));
+}
+
 TEST(SceneParse, HashFollowsMeshMaterialsAndBoundary) {
   const std::string h = sceneHash(parseScene(kEverything, "a.yaml"));
   EXPECT_EQ(h.size(), 16u);

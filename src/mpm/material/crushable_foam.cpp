@@ -1,0 +1,89 @@
+#include "mpm/material/crushable_foam.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "mpm/material/tensor.h"
+#include "mpm/mpm_constants.h"
+
+namespace mpmice::mpm {
+
+CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f) : c_(c), f_(f) {
+  if (!(f_.plateau > 0)) throw std::invalid_argument("crushable_foam: plateau_stress must be > 0");
+  if (!(f_.densification > 0)) throw std::invalid_argument("crushable_foam: densification_strain must be > 0");
+  if (!(f_.plasticPoisson > -1.0 && f_.plasticPoisson < 0.5))
+    throw std::invalid_argument("crushable_foam: plastic_poissons_ratio must lie in (-1, 0.5), got " +
+                                std::to_string(f_.plasticPoisson));
+  if (!(f_.beta > 0)) throw std::invalid_argument("crushable_foam: hardening_beta must be > 0");
+  alpha_ = std::sqrt(9.0 * (1.0 - 2.0 * f_.plasticPoisson) / (2.0 * (1.0 + f_.plasticPoisson)));
+  shape_ = 1.0 + alpha_ * alpha_ / 9.0;
+}
+
+double CrushableFoam::flowStress(double e) const {
+  const double x = e / f_.densification;
+  return f_.plateau + f_.gamma * x - f_.alpha2 * std::log1p(-std::pow(x, f_.beta));
+}
+
+void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const {
+  const double K = c_.K, G = c_.G, a2 = alpha_ * alpha_;
+  for (std::size_t i = begin; i < end; ++i) {
+    const Sym3 s = loadStress(p, i);
+    ElasticTrial t = elasticTrial(loadMat(p.L, i), s, K, G, dt);
+    const double q = std::sqrt(1.5 * ddot(t.dev, t.dev));
+    const double e0 = p.eqps[i];
+    const double Y0 = flowStress(e0);
+    if ((q * q + a2 * t.mean * t.mean) / shape_ > Y0 * Y0) {
+      // Return: with multiplier dl (= d eps_hat) and Y = Y(e0 + dl) the end state is
+      // q = q_tr / (1 + 3 G dl / (Y c)), sigma_m = sigma_m_tr / (1 + K alpha^2 dl / (Y c)), and the
+      // consistency condition r(dl) = sqrt((q^2 + alpha^2 sigma_m^2) / c) - Y = 0, r(0) > 0 and
+      // r -> -infinity below eps_D - e0: bisection-safeguarded secant on that bracket.
+      auto residual = [&](double dl) {
+        const double Y = flowStress(e0 + dl);
+        const double qq = q / (1.0 + 3.0 * G * dl / (Y * shape_));
+        const double mm = t.mean / (1.0 + K * a2 * dl / (Y * shape_));
+        return std::sqrt((qq * qq + a2 * mm * mm) / shape_) - Y;
+      };
+      // The upper end: closer and closer below eps_D until r < 0 (the densification singularity,
+      // alpha_2 > 0, guarantees it); a trial beyond even that leaves the state at the last one.
+      const double room = f_.densification - e0;
+      double lo = 0, rlo = residual(0.0), hi = room * (1.0 - 1e-3), rhi = residual(hi);
+      for (double gap = 1e-6; rhi > 0 && gap > 1e-16; gap *= 1e-3) {
+        lo = hi;
+        rlo = rhi;
+        hi = room * (1.0 - gap);
+        rhi = residual(hi);
+      }
+      double dl = hi;
+      for (int it = 0; it < kFoamReturnMaxIterations && hi - lo > kFoamReturnTolerance * (e0 + hi); ++it) {
+        double mid = rhi < 0 && rlo > 0 ? lo + (hi - lo) * rlo / (rlo - rhi) : 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi) || it % 3 == 2) mid = 0.5 * (lo + hi);  // keep the bracket shrinking
+        const double r = residual(mid);
+        if (r > 0) {
+          lo = mid;
+          rlo = r;
+        } else {
+          hi = mid;
+          rhi = r;
+        }
+        if (std::fabs(r) <= kFoamReturnTolerance * flowStress(e0 + mid)) {
+          lo = hi = mid;
+          break;
+        }
+      }
+      dl = 0.5 * (lo + hi);
+      const double Y = flowStress(e0 + dl);
+      const double sd = 1.0 / (1.0 + 3.0 * G * dl / (Y * shape_));
+      for (auto& c : t.dev) c *= sd;
+      t.mean /= 1.0 + K * a2 * dl / (Y * shape_);
+      p.eqps[i] = e0 + dl;
+    }
+    const Sym3 n = {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
+    p.work[i] += stressWork(s, n, t.D, p.vol[i], dt);
+    storeStress(p, i, n);
+  }
+}
+
+double CrushableFoam::waveSpeed(double rho) const { return std::sqrt((c_.K + 4.0 * c_.G / 3.0) / rho); }
+
+}  // namespace mpmice::mpm

@@ -1,0 +1,49 @@
+#pragma once
+/// @brief Crushable foam (Deshpande & Fleck 2000, isotropic hardening; the form of LS-DYNA's
+/// *MAT_DESHPANDE_FLECK_FOAM): a homogenized metal foam that yields under pressure as well as
+/// shear and hardens to densification.
+///
+/// Yield surface  sigma_hat = Y(eps_hat),  sigma_hat^2 = (q^2 + alpha^2 sigma_m^2) / (1 + (alpha/3)^2),
+/// q the von Mises stress, sigma_m the mean stress; alpha^2 = 9 (1 - 2 nu_p) / (2 (1 + nu_p)) from the
+/// plastic Poisson's ratio nu_p (0: alpha = 2.12, no lateral plastic flow in uniaxial crush).
+/// Hardening  Y = sigma_p + gamma eps_hat / eps_D + alpha_2 ln(1 / (1 - (eps_hat / eps_D)^beta)):
+/// plateau, linear rise and densification (Y -> infinity as eps_hat -> eps_D). Associated flow;
+/// eps_hat is the plastic strain work-conjugate to sigma_hat (sigma_hat d eps_hat = sigma : d eps_p).
+/// Hypoelastic (Jaumann) trial with K, G; the return solves the one scalar equation of the
+/// consistency condition for the multiplier by safeguarded Newton (bracketed below eps_D).
+/// Closed forms (verified in tests/unit/mpm/test_constitutive.cpp): uniaxial stress |sigma| =
+/// Y(|eps| - |sigma|/E); hydrostatic |sigma_m| = Y(eps_hat) sqrt(1 + alpha^2/9) / alpha with
+/// eps_hat = (|eps_v| - |sigma_m|/K) sqrt(1 + alpha^2/9) / alpha.
+/// Scene: `model: {type: crushable_foam, youngs_modulus, poissons_ratio, plateau_stress,
+/// densification_strain, plastic_poissons_ratio, hardening_gamma, hardening_alpha2, hardening_beta}`.
+#include "mpm/material/constitutive_model.h"
+
+namespace mpmice::mpm {
+
+struct CrushableFoamParams {
+  double plateau = 0;         // sigma_p [Pa]
+  double densification = 0;  // eps_D
+  double plasticPoisson = 0;  // nu_p
+  double gamma = 0;          // [Pa]
+  double alpha2 = 0;         // [Pa]
+  double beta = 1;
+};
+
+class CrushableFoam final : public ConstitutiveModel {
+ public:
+  CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f);
+  [[nodiscard]] const char* name() const override { return "crushable_foam"; }
+  void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override;
+  /// Flow stress Y at eps_hat (< eps_D).
+  [[nodiscard]] double flowStress(double epsHat) const;
+  /// The yield surface's shape factor alpha.
+  [[nodiscard]] double alpha() const { return alpha_; }
+
+ private:
+  ElasticConstants c_;
+  CrushableFoamParams f_;
+  double alpha_ = 0, shape_ = 1;  // shape_ = 1 + (alpha/3)^2
+};
+
+}  // namespace mpmice::mpm
