@@ -16,6 +16,12 @@ inline constexpr double kReferencePressure = 101325.0;
 /// internalEnergy, cv * T_ref, is never asked for by a test).
 inline constexpr double kReferenceTemperature = 300.0;
 
+// ---- face pressure (ice.face_pressure: riemann)
+/// Slope Gamma of the shock impedance W = rho (c + Gamma |du|) in the two-shock face pressure:
+/// (gamma + 1) / 2 of an ideal gas with gamma = 1.4 (the strong-shock limit of its Hugoniot).
+/// Pinned by IceShockDefaults.* (the overshoot bounds) and IceSod.* (the L1 bounds).
+inline constexpr double kShockImpedanceSlope = 1.2;
+
 // ---- regularisation: traces, caps and cut-offs
 /// Volume fraction of each fluid left in the cells a solid object of the scene covers at the
 /// start. No test pins it (only the mpmice integration tests have solid regions, and they

@@ -194,6 +194,9 @@ struct IceOptions {
   // Shock viscosity at faces in compression (du < 0): q = rho (linear c |du| + quadratic du^2),
   // added to the face pressure (0, 0: off).
   double shock_viscosity_linear = 0;
+  // Face pressure: "riemann" (the two-shock approximate Riemann solution at faces in compression,
+  // docs/ice.md) or "average" (the density-weighted average of the cell pressures).
+  std::string face_pressure = "riemann";
   double shock_viscosity_quadratic = 0;
   bool operator==(const IceOptions&) const = default;
 };

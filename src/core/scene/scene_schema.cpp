@@ -532,7 +532,8 @@ class SchemaReader {
   void readIce(const YamlValue& v) {
     const YamlMap m = v.map();
     m.allow({"advection", "limiter", "pressure_solver", "linear_solver", "solver_tolerance",
-             "solver_max_iterations", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity"});
+             "solver_max_iterations", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
+             "face_pressure"});
     IceOptions& o = s_.ice;
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
@@ -542,6 +543,7 @@ class SchemaReader {
     o.solver_max_iterations = static_cast<int>(m.integer("solver_max_iterations", o.solver_max_iterations, 1, kIntMax));
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));
     o.pressure_tolerance = m.number("pressure_tolerance", o.pressure_tolerance, Range::positive());
+    o.face_pressure = m.choice("face_pressure", o.face_pressure, {"riemann", "average"}, "face pressure");
     if (const auto sv = m.get("shock_viscosity")) {
       const YamlMap q = sv->map();
       q.allow({"linear", "quadratic"});

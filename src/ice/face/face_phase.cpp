@@ -1,5 +1,7 @@
 // IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces, and the
 // face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
+// minus the two-shock Riemann dissipation W_L W_R / (W_L + W_R) (u_R - u_L) at faces in compression
+// (ice.face_pressure: riemann, the default for fluids alone),
 // plus the shock viscosity q = rho (q1 c |du| + q2 du^2) at faces in compression when asked
 // (ice.shock_viscosity). p_f enters the momentum and the energy flux form, so q's work is
 // returned as heat by the energy correction (fluids without external materials).
@@ -7,6 +9,7 @@
 #include <cmath>
 
 #include "ice/exchange/face_exchange.h"
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
 
@@ -81,9 +84,41 @@ double shockViscosity(const IceState& st, const int* l, int i, int j, int k, int
   const double rho = 2.0 * dL * dR / (dL + dR);
   return rho * (q1 * c * -du + q2 * du * du);
 }
+// Mixture density, acoustic impedance rho c (Wood) and mass-averaged velocity of a cell.
+struct CellMix {
+  double rho = 0, z = 0, u = 0;
+};
+CellMix cellMix(const IceState& st, const int* c, int d) {
+  double mass = 0, mu = 0, dn = 0, k = 0;
+  for (const MaterialState& m : st.mat) {
+    const double mm = m.mass(c[0], c[1], c[2]);
+    mass += mm;
+    mu += mm * m.vel(c[0], c[1], c[2], d);
+    const double t = m.theta(c[0], c[1], c[2]);
+    if (t > 0) dn += t / m.spvol(c[0], c[1], c[2]), k += t * m.kappa(c[0], c[1], c[2]);
+  }
+  CellMix r;
+  r.rho = dn;
+  r.z = dn > 0 && k > 0 ? std::sqrt(dn / k) : 0.0;
+  r.u = mass > 0 ? mu / mass : 0.0;
+  return r;
+}
+
+// The two-shock approximate Riemann solution's dissipative part (Dukowicz 1985) at a face in
+// compression (du = u_R - u_L < 0): p* = p_avg - W_L W_R / (W_L + W_R) du with the shock
+// impedances W = rho (c + Gamma |du|), Gamma = (gamma + 1) / 2 of an ideal gas of gamma 1.4
+// (kShockImpedanceSlope). Zero at faces in expansion and where the velocity is uniform.
+double riemannDissipation(const IceState& st, const int* l, int i, int j, int k, int d) {
+  const int r[3] = {i, j, k};
+  const CellMix L = cellMix(st, l, d), R = cellMix(st, r, d);
+  const double du = R.u - L.u;
+  if (!(du < 0) || !(L.z > 0 && R.z > 0)) return 0.0;
+  const double wL = L.z - kShockImpedanceSlope * L.rho * du, wR = R.z - kShockImpedanceSlope * R.rho * du;
+  return -wL * wR / (wL + wR) * du;
+}
 }  // namespace
 
-void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2) {
+void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann) {
   const bool q = q1 > 0 || q2 > 0;
   for (int d = 0; d < dim; ++d) {
     forEach(owned.faces(d), [&](int i, int j, int k) {
@@ -97,11 +132,27 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
       const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
       double pf = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
       if (q && rL > 0 && rR > 0) pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
+      if (riemann && rL > 0 && rR > 0) pf += riemannDissipation(st, l, i, j, k, d);
       st.pressFace[d](i, j, k) = pf;
     });
   }
 }
 
-void IceSolver::computeFacePressure() { computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_); }
+// With external materials the energy correction is off, so the Riemann term's work would not
+// return as heat: coupled runs keep the average (docs/ice.md "Face pressure").
+// The impedances need kappa in the ghost cells (the equilibrium fills the other fields' ghosts).
+void IceSolver::computeFacePressure() {
+  const bool riemann = riemannFacePressure_ && !anyExternal_;
+  if (riemann) {
+    std::vector<std::pair<core::Field*, FieldKind>> fs;
+    std::vector<int> mats;
+    for (int r = 0; r < numMaterials(); ++r) {
+      fs.push_back({&st_.mat[r].kappa, FieldKind::Scalar});
+      mats.push_back(r);
+    }
+    fillGhosts(fs, mats);
+  }
+  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemann);
+}
 
 }  // namespace mpmice::ice

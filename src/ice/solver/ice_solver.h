@@ -165,6 +165,7 @@ class IceSolver {
   long linItersTotal_ = 0;
   int limiter_ = 1;
   double q1_ = 0, q2_ = 0;  // shock viscosity (linear, quadratic)
+  bool riemannFacePressure_ = true;  // ice.face_pressure: riemann (fluids only)
   double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
   int solverMaxIt_ = 1000;
   core::RealVect gravity_{0, 0, 0};

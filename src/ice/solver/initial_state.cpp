@@ -32,6 +32,9 @@ void IceSolver::initialize(const core::Scene& scene) {
   semiImplicit_ = o.pressure_solver == "semi_implicit";
   q1_ = o.shock_viscosity_linear;
   q2_ = o.shock_viscosity_quadratic;
+  if (o.face_pressure != "riemann" && o.face_pressure != "average")
+    throw std::invalid_argument("ice.face_pressure: unknown value '" + o.face_pressure + "'; valid: riemann, average");
+  riemannFacePressure_ = o.face_pressure == "riemann";
   if (o.linear_solver == "cg") linearSolver_ = LinearSolver::Cg;
   else if (o.linear_solver == "bicgstab") linearSolver_ = LinearSolver::Bicgstab;
   else if (o.linear_solver == "pfmg_pcg") linearSolver_ = LinearSolver::PfmgPcg;

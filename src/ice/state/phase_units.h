@@ -20,7 +20,10 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
 /// mixture mass; the mean where both are empty; st.pressFace).
 /// Face pressures (density-weighted), plus the shock viscosity q = rho_f (q1 c_f |du| + q2 du^2) at
 /// faces in compression (du = u_R - u_L < 0 of the cells' mass-averaged velocities; rho_f the
-/// harmonic mean of the mixture densities, c_f the smaller mixture sound speed).
-void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0);
+/// harmonic mean of the mixture densities, c_f the smaller mixture sound speed); with riemann the
+/// two-shock approximate Riemann dissipation -W_L W_R / (W_L + W_R) du at faces in compression,
+/// W = rho (c + kShockImpedanceSlope |du|) of each cell (mixture density and Wood sound speed).
+void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0,
+                          bool riemann = false);
 
 }  // namespace mpmice::ice

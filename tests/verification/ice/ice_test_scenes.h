@@ -58,7 +58,7 @@ inline core::RegionSpec region(const std::string& name, core::ShapeSpec shape, s
 }
 
 struct TubeOptions {
-  std::string advection = "second_order", pressure = "explicit", limiter = "van_leer";
+  std::string advection = "second_order", pressure = "explicit", limiter = "van_leer", facePressure = "riemann";
   double cfl = 0.4;
 };
 
@@ -77,6 +77,7 @@ inline core::Scene shockTube(int n, Primitive L, Primitive R, double x0, double 
   s.ice.advection = o.advection;
   s.ice.pressure_solver = o.pressure;
   s.ice.limiter = o.limiter;
+  s.ice.face_pressure = o.facePressure;
   return s;
 }
 
