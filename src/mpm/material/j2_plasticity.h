@@ -20,7 +20,11 @@ class J2Plasticity final : public ConstitutiveModel {
                std::vector<double> tableStress = {});
   [[nodiscard]] const char* name() const override { return "j2_plasticity"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
+  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                      std::size_t& arg) const override {
+    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
+  }
   /// Yield stress and its slope at equivalent plastic strain e.
   void yield(double e, double& sy, double& slope) const;
 
