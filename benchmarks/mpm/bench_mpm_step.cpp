@@ -1,7 +1,9 @@
 // Whole-step MPM throughput (Google Benchmark): one uncoupled MpmSolver::advance() (USL, FLIP,
 // linear elastic) per iteration, for each shape function in 2D and 3D, on one core. The counter
-// particle_steps is particles x steps per second (kIsRate). Each case also runs with the health
-// check every program's loop calls after each step (".../health_check"): the difference is its cost.
+// particle_steps is particles x steps per second of CPU time (kIsRate; CPU time, not wall time,
+// because the machines are shared). Each case also runs with the health check every program's loop
+// calls after each step (".../health_check"): the difference is its cost. FusedReference/<dim>/<shape>
+// is the minimal fused kernel (fused_reference.h) on the same block, the reference figure.
 //
 // Sample run (the figures of docs/mpm.md, Performance):
 //   build-mpm/benchmarks/mpm/bench_mpm_step --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -16,6 +18,7 @@
 #include <numbers>
 #include <string>
 
+#include "fused_reference.h"
 #include "mpm/solver/health_check.h"
 #include "mpm_problems.h"
 
@@ -77,6 +80,22 @@ void BM_MpmStep(benchmark::State& state, int dim, const std::string& shape, int 
   state.counters["particles"] = np;
 }
 
+// The minimal fused kernel (fused_reference.h) on the same block, same particles and material.
+template <class Shape, int Dim>
+void BM_FusedReference(benchmark::State& state) {
+  const int block = Dim == 2 ? 256 : 24, margin = Dim == 2 ? 4 : 3;
+  mpm::bench::FusedReference<Shape, Dim> ref(block, margin, 1000, 1e6, 0.3, 0.4);
+  for (int k = 0; k < 2; ++k) ref.step();  // warm-up, as the solver's case
+  for (auto _ : state) {
+    ref.step();
+    benchmark::ClobberMemory();
+  }
+  const auto np = static_cast<double>(ref.size());
+  state.counters["particle_steps"] =
+      benchmark::Counter(np * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["particles"] = np;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -87,8 +106,15 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark(
             ("MpmStep/" + std::to_string(dim) + "D/" + shape + (health ? "/health_check" : "")).c_str(),
             [dim, s = std::string(shape), health](benchmark::State& st) { BM_MpmStep(st, dim, s, health); })
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime();
+            ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("FusedReference/2D/linear", BM_FusedReference<mpm::LinearShape, 2>)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("FusedReference/2D/bspline2", BM_FusedReference<mpm::BSpline2Shape, 2>)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("FusedReference/3D/linear", BM_FusedReference<mpm::LinearShape, 3>)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("FusedReference/3D/bspline2", BM_FusedReference<mpm::BSpline2Shape, 3>)
+      ->Unit(benchmark::kMillisecond);
   for (int dim : {2, 3})
     benchmark::RegisterBenchmark(("MpmHealthCheckAlone/" + std::to_string(dim) + "D").c_str(),
                                  [dim](benchmark::State& st) { BM_MpmStep(st, dim, "linear", 2); })

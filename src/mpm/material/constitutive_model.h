@@ -10,6 +10,7 @@
 /// Scene names: linear_elastic, neo_hookean, j2_plasticity, cowper_symonds (j2_plasticity.h),
 /// crushable_foam (parameters: see each header).
 /// An unknown name is an error listing the valid names.
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -28,13 +29,37 @@ class ConstitutiveModel {
   virtual void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const = 0;
   /// Dilatational (P-) wave speed at density rho, for the time step.
   [[nodiscard]] virtual double waveSpeed(double rho) const = 0;
+  /// The CFL signal speed of particles [begin, end): max of waveSpeed(m / V) + |v| (the first `dim`
+  /// velocity components), 0 if the range is empty; `arg` the first particle reaching it (end if
+  /// none). One virtual call per material: models implement it with maxSignalSpeedOver().
+  [[nodiscard]] virtual double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                              std::size_t& arg) const = 0;
 };
+
+/// The loop of ConstitutiveModel::maxSignalSpeed with the model's wave speed c(rho) inlined.
+template <class C>
+double maxSignalSpeedOver(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t& arg, C&& c) {
+  double cmax = 0;
+  arg = end;
+  for (std::size_t i = begin; i < end; ++i) {
+    double v2 = 0;
+    for (int d = 0; d < dim; ++d) v2 += p.v[d][i] * p.v[d][i];
+    const double s = c(p.mass[i] / p.vol[i]) + std::sqrt(v2);
+    if (s > cmax) {
+      cmax = s;
+      arg = i;
+    }
+  }
+  return cmax;
+}
 
 /// Elastic constants read from a ModelSpec (bulk_modulus and shear_modulus, or youngs_modulus and
 /// poissons_ratio); `what` names the material in errors.
 struct ElasticConstants {
   double K = 0, G = 0;
   [[nodiscard]] double lambda() const { return K - 2.0 * G / 3.0; }
+  /// The P-wave speed sqrt((K + 4 G / 3) / rho).
+  [[nodiscard]] double pWaveSpeed(double rho) const { return std::sqrt((K + 4.0 * G / 3.0) / rho); }
   static ElasticConstants fromSpec(const core::ModelSpec& spec, const std::string& what);
 };
 

@@ -84,6 +84,4 @@ void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
   }
 }
 
-double CrushableFoam::waveSpeed(double rho) const { return std::sqrt((c_.K + 4.0 * c_.G / 3.0) / rho); }
-
 }  // namespace mpmice::mpm

@@ -34,7 +34,11 @@ class CrushableFoam final : public ConstitutiveModel {
   CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f);
   [[nodiscard]] const char* name() const override { return "crushable_foam"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
+  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                      std::size_t& arg) const override {
+    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
+  }
   /// Flow stress Y at eps_hat (< eps_D).
   [[nodiscard]] double flowStress(double epsHat) const;
   /// The yield surface's shape factor alpha.

@@ -100,8 +100,4 @@ void J2Plasticity::updateStress(ParticleSet& p, std::size_t begin, std::size_t e
   }
 }
 
-double J2Plasticity::waveSpeed(double rho) const {
-  return std::sqrt((c_.K + 4.0 * c_.G / 3.0) / rho);
-}
-
 }  // namespace mpmice::mpm

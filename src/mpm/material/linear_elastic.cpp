@@ -22,8 +22,4 @@ void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
   }
 }
 
-double LinearElastic::waveSpeed(double rho) const {
-  return std::sqrt((c_.K + 4.0 * c_.G / 3.0) / rho);
-}
-
 }  // namespace mpmice::mpm

@@ -14,7 +14,11 @@ class LinearElastic final : public ConstitutiveModel {
   explicit LinearElastic(const ElasticConstants& c) : c_(c) {}
   [[nodiscard]] const char* name() const override { return "linear_elastic"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override;
+  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
+  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                      std::size_t& arg) const override {
+    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
+  }
   [[nodiscard]] const ElasticConstants& constants() const { return c_; }
 
  private:

@@ -27,8 +27,4 @@ void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end
   }
 }
 
-double NeoHookean::waveSpeed(double rho) const {
-  return std::sqrt((c_.K + 4.0 * c_.G / 3.0) / rho);
-}
-
 }  // namespace mpmice::mpm

@@ -50,10 +50,11 @@ inline Sym3 jaumannSpin(const Mat3& L, const Sym3& s) {
   double R[3][3];
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
+      // The diagonal of W is an exact 0: its products add exact zeros and are left out.
       double ws = 0, sw = 0;
       for (int c = 0; c < 3; ++c) {
-        ws += W[a][c] * S[c][b];
-        sw += S[a][c] * W[c][b];
+        if (c != a) ws += W[a][c] * S[c][b];
+        if (c != b) sw += S[a][c] * W[c][b];
       }
       R[a][b] = ws - sw;
     }

@@ -6,6 +6,8 @@
 /// raw pointers: no virtual calls, no allocations. Fields hold three components whatever the
 /// dimension; only the first Dim are touched.
 #include <cstddef>
+#include <cstdint>
+#include <type_traits>
 
 #include "mpm/grid/grid.h"
 #include "mpm/particles/particle_set.h"
@@ -25,6 +27,39 @@ void dispatch(ShapeKind k, int dim, F&& f) {
     else
       f.template operator()<S, 3>();
   });
+}
+
+/// The linear hat's cached stencil keeps its fraction f per direction (weights 1 - f and f,
+/// gradients -1/dx and 1/dx: LinearShape::eval's operations); the other shapes keep weights and
+/// gradients.
+template <class Shape>
+inline constexpr bool kCompactRecord = std::is_same_v<Shape, LinearShape>;
+
+/// The tensor-product loop over a stencil with first node o0 and per-direction weights w and
+/// gradients dw: f(node offset, weight, grad x, grad y, grad z). In 1D and 2D the missing
+/// directions (weight 1, gradient 0) are left out of the products: multiplying by an exact 1 and
+/// adding exact zeros changes no bit, so every dimension gives the figures of the 3D formula.
+template <int N, int Dim, class F>
+inline void forStencilNodes(std::int64_t o0, const GridGeom& g, const double (&w)[3][N], const double (&dw)[3][N],
+                            F&& f) {
+  if constexpr (Dim == 1) {
+    for (int a = 0; a < N; ++a) f(o0 + a, w[0][a], dw[0][a], 0.0, 0.0);
+  } else if constexpr (Dim == 2) {
+    for (int b = 0; b < N; ++b) {
+      const double wy = w[1][b], dy = dw[1][b];
+      const std::int64_t o = o0 + b * g.sy;
+      for (int a = 0; a < N; ++a) f(o + a, w[0][a] * wy, dw[0][a] * wy, w[0][a] * dy, 0.0);
+    }
+  } else {
+    for (int c = 0; c < N; ++c)
+      for (int b = 0; b < N; ++b) {
+        const double wyz = w[1][b] * w[2][c];
+        const double dyz = dw[1][b] * w[2][c];
+        const double wdz = w[1][b] * dw[2][c];
+        const std::int64_t o = o0 + b * g.sy + c * g.sz;
+        for (int a = 0; a < N; ++a) f(o + a, w[0][a] * wyz, dw[0][a] * wyz, w[0][a] * dyz, w[0][a] * wdz);
+      }
+  }
 }
 
 /// Stencil of one particle: first node and per-direction weights and physical gradients.
@@ -53,83 +88,169 @@ struct Stencil {
   /// Calls f(node offset, weight, grad x, grad y, grad z) for every stencil node.
   template <class F>
   inline void forNodes(const GridGeom& g, F&& f) const {
-    const std::int64_t o0 = g.index(base[0], base[1], base[2]);
-    for (int c = 0; c < NZ; ++c)
-      for (int b = 0; b < NY; ++b) {
-        const double wyz = w[1][b] * w[2][c];
-        const double dyz = dw[1][b] * w[2][c];
-        const double wdz = w[1][b] * dw[2][c];
-        const std::int64_t o = o0 + b * g.sy + c * g.sz;
-        for (int a = 0; a < N; ++a)
-          f(o + a, w[0][a] * wyz, dw[0][a] * wyz, w[0][a] * dyz, w[0][a] * wdz);
-      }
+    forStencilNodes<N, Dim>(g.index(base[0], base[1], base[2]), g, w, dw, f);
+  }
+
+  /// Stores this stencil in a cache record (StencilCache layout).
+  inline void store(std::int64_t& offset, double* rec, const GridGeom& g) const {
+    offset = g.index(base[0], base[1], base[2]);
+    if constexpr (kCompactRecord<Shape>) {
+      for (int d = 0; d < Dim; ++d) rec[d] = w[d][1];
+    } else {
+      for (int d = 0; d < Dim; ++d)
+        for (int a = 0; a < N; ++a) {
+          rec[d * N + a] = w[d][a];
+          rec[(Dim + d) * N + a] = dw[d][a];
+        }
+    }
   }
 };
 
-/// Mass and momentum to the nodes (lumped mass).
+/// The stencils of every particle for one step: computed once, in the particle-to-grid pass, and
+/// reused by the force pass and the grid-to-particle passes (positions change only in the last
+/// one). Per particle: the flat offset of its first node and one record of Dim x N weights then
+/// Dim x N physical gradients (per direction: the tensor product is formed on use, with the same
+/// products as Stencil::forNodes, so the results are bit-for-bit those of recomputing).
+/// kCompactRecord shapes keep one fraction per direction and recompute weights and gradients.
 template <class Shape, int Dim>
-void particlesToGrid(const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
-                     double* mass, double* const mom[3]) {
-  Stencil<Shape, Dim> s;
-  for (std::size_t i = begin; i < end; ++i) {
+struct StencilCache {
+  static constexpr int N = Shape::kNodes;
+  static constexpr int kRecord = kCompactRecord<Shape> ? Dim : 2 * Dim * N;
+  std::int64_t* offset;
+  double* rec;
+
+  /// Calls f(node offset, weight, grad x, grad y, grad z) for every node of particle i's stencil.
+  template <class F>
+  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+    const double* r = rec + i * kRecord;
+    double w[3][N], dw[3][N];
+    if constexpr (kCompactRecord<Shape>) {
+      for (int d = 0; d < Dim; ++d) {
+        w[d][0] = 1.0 - r[d];
+        w[d][1] = r[d];
+        dw[d][0] = -1.0 * g.invDx[d];
+        dw[d][1] = 1.0 * g.invDx[d];
+      }
+    } else {
+      for (int d = 0; d < Dim; ++d)
+        for (int a = 0; a < N; ++a) {
+          w[d][a] = r[d * N + a];
+          dw[d][a] = r[(Dim + d) * N + a];
+        }
+    }
+    forStencilNodes<N, Dim>(offset[i], g, w, dw, f);
+  }
+};
+
+/// Stencil sources of the kernels: forNodes(i, g, f) over particle i's stencil.
+/// Evaluated on use (the MPM-ICE operators' extra passes).
+template <class Shape, int Dim>
+struct EvaluatedStencils {
+  const ParticleSet& p;
+  mutable Stencil<Shape, Dim> s;
+  template <class F>
+  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
     s.compute(p, i, g);
+    s.forNodes(g, f);
+  }
+};
+/// Evaluated and stored in a StencilCache for the passes after it (the step's particle-to-grid).
+template <class Shape, int Dim>
+struct StoredStencils {
+  const ParticleSet& p;
+  StencilCache<Shape, Dim> cache;
+  mutable Stencil<Shape, Dim> s;
+  template <class F>
+  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+    s.compute(p, i, g);
+    s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
+    s.forNodes(g, f);
+  }
+};
+
+/// Whether the step keeps the stencils of Shape (StencilCache) or evaluates them in each pass
+/// (every shape is cached: fewer instructions than evaluating, measured with callgrind, docs/mpm.md).
+template <class Shape>
+inline constexpr bool kCacheStencils = true;
+
+/// The stencil source of the passes after the step's particle-to-grid.
+template <class Shape, int Dim>
+using StepStencils = std::conditional_t<kCacheStencils<Shape>, StencilCache<Shape, Dim>, EvaluatedStencils<Shape, Dim>>;
+
+/// Mass and momentum to the nodes (lumped mass).
+template <int Dim, class Src>
+void particlesToGrid(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+                     double* mass, double* const mom[3]) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double m = p.mass[i];
     double mv[3] = {0, 0, 0};
     for (int d = 0; d < Dim; ++d) mv[d] = m * p.v[d][i];
-    s.forNodes(g, [&](std::int64_t n, double w, double, double, double) {
+    src.forNodes(i, g, [&](std::int64_t n, double w, double, double, double) {
       mass[n] += m * w;
       for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
     });
   }
 }
+template <class Shape, int Dim>
+void particlesToGrid(const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+                     double* mass, double* const mom[3]) {
+  particlesToGrid<Dim>(EvaluatedStencils<Shape, Dim>{p, {}}, p, begin, end, g, mass, mom);
+}
 
 /// Momentum only (MUSL's velocity remap).
-template <class Shape, int Dim>
-void momentumToGrid(const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+template <int Dim, class Src>
+void momentumToGrid(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
                     double* const mom[3]) {
-  Stencil<Shape, Dim> s;
   for (std::size_t i = begin; i < end; ++i) {
-    s.compute(p, i, g);
     double mv[3] = {0, 0, 0};
     for (int d = 0; d < Dim; ++d) mv[d] = p.mass[i] * p.v[d][i];
-    s.forNodes(g, [&](std::int64_t n, double w, double, double, double) {
+    src.forNodes(i, g, [&](std::int64_t n, double w, double, double, double) {
       for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
     });
   }
 }
 
 /// Internal force -V sigma grad(w) plus body force m g w and particle loads (fext + fsurf) w.
-template <class Shape, int Dim>
-void internalForces(const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+/// In 1D and 2D the terms with the gradient 0 of a missing direction are left out (exact zeros).
+template <int Dim, class Src>
+void internalForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
                     const double gravity[3], bool loads, double* const force[3]) {
-  Stencil<Shape, Dim> s;
   for (std::size_t i = begin; i < end; ++i) {
-    s.compute(p, i, g);
     const double V = p.vol[i];
-    const double sxx = V * p.stress[kXX][i], syy = V * p.stress[kYY][i], szz = V * p.stress[kZZ][i];
-    const double sxy = V * p.stress[kXY][i], syz = V * p.stress[kYZ][i], sxz = V * p.stress[kXZ][i];
     double b[3];
     for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
-    s.forNodes(g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
-      force[0][n] += b[0] * w - (sxx * gx + sxy * gy + sxz * gz);
-      if constexpr (Dim >= 2) force[1][n] += b[1] * w - (sxy * gx + syy * gy + syz * gz);
-      if constexpr (Dim >= 3) force[2][n] += b[2] * w - (sxz * gx + syz * gy + szz * gz);
-      (void)szz;
-    });
+    const double sxx = V * p.stress[kXX][i];
+    if constexpr (Dim == 1) {
+      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double, double) {
+        force[0][n] += b[0] * w - sxx * gx;
+      });
+    } else if constexpr (Dim == 2) {
+      const double syy = V * p.stress[kYY][i], sxy = V * p.stress[kXY][i];
+      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double) {
+        force[0][n] += b[0] * w - (sxx * gx + sxy * gy);
+        force[1][n] += b[1] * w - (sxy * gx + syy * gy);
+      });
+    } else {
+      const double syy = V * p.stress[kYY][i], szz = V * p.stress[kZZ][i];
+      const double sxy = V * p.stress[kXY][i], syz = V * p.stress[kYZ][i], sxz = V * p.stress[kXZ][i];
+      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+        force[0][n] += b[0] * w - (sxx * gx + sxy * gy + sxz * gz);
+        force[1][n] += b[1] * w - (sxy * gx + syy * gy + syz * gz);
+        force[2][n] += b[2] * w - (sxz * gx + syz * gy + szz * gz);
+      });
+    }
   }
 }
 
 /// Grid to particles. kVelocity: FLIP/PIC velocity update from vL (and vn for the FLIP
 /// increment); kMove: x += dt vL; kGradient: L = grad(vGrad).
-template <class Shape, int Dim, bool kVelocity, bool kMove, bool kGradient>
-void gridToParticles(ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
-                     const double* const vL[3], const double* const vn[3],
-                     const double* const vGrad[3], double dt, double flip) {
-  Stencil<Shape, Dim> s;
+template <int Dim, bool kVelocity, bool kMove, bool kGradient, class Src>
+void gridToParticles(const Src& src, ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+                     const double* const vL[3], const double* const vn[3], const double* const vGrad[3], double dt,
+                     double flip) {
   for (std::size_t i = begin; i < end; ++i) {
-    s.compute(p, i, g);
     double vnew[3] = {0, 0, 0}, vold[3] = {0, 0, 0}, L[3][3] = {};
-    s.forNodes(g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
       if constexpr (kVelocity || kMove)
         for (int d = 0; d < Dim; ++d) vnew[d] += w * vL[d][n];
       if constexpr (kVelocity)

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/health/health.h"
+#include "mpm/material/tensor.h"
 #include "mpm/solver/kernels.h"
 #include "mpm/solver/startup_check.h"
 
@@ -96,14 +97,11 @@ double MpmSolver::stableTimeStep(std::size_t* limiting) const {
   for (std::size_t m = 0; m < models_.size(); ++m) {
     if (!models_[m]) continue;
     const auto [b, e] = p_.materialRange(static_cast<int>(m));
-    for (std::size_t i = b; i < e; ++i) {
-      double v2 = 0;
-      for (int d = 0; d < mesh.dim(); ++d) v2 += p_.v[d][i] * p_.v[d][i];
-      const double s = models_[m]->waveSpeed(p_.mass[i] / p_.vol[i]) + std::sqrt(v2);
-      if (s > cmax) {
-        cmax = s;
-        arg = i;
-      }
+    std::size_t at = e;
+    const double s = models_[m]->maxSignalSpeed(p_, b, e, mesh.dim(), at);
+    if (s > cmax) {
+      cmax = s;
+      arg = at;
     }
   }
   const double local = cmax;
@@ -257,7 +255,15 @@ void MpmSolver::particlesToGrid() {
   double* mass = g.mass.data();
   const GridGeom geom = g.geom();
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
-    kernels::particlesToGrid<S, D>(p_, 0, p_.size(), geom, mass, mom);
+    if constexpr (kernels::kCacheStencils<S>) {
+      stencilOffset_.resize(p_.size());
+      stencilRecord_.resize(p_.size() * kernels::StencilCache<S, D>::kRecord);
+      const kernels::StoredStencils<S, D> src{p_, {stencilOffset_.data(), stencilRecord_.data()}, {}};
+      kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom);
+      stencilsValid_ = true;
+    } else {
+      kernels::particlesToGrid<D>(kernels::EvaluatedStencils<S, D>{p_, {}}, p_, 0, p_.size(), geom, mass, mom);
+    }
   });
   bcs_.fold(g.mass, Parity::Scalar);
   bcs_.fold(g.velocity, Parity::Vector);
@@ -272,49 +278,103 @@ void MpmSolver::particlesToGrid() {
   applyBC(g.velocity);
 }
 
-void MpmSolver::velocityGradientFrom(const Field& v) {
-  const double* vg[3] = {v.data(0), v.data(1), v.data(2)};
-  const GridGeom geom = grid_->geom();
+template <class F>
+void MpmSolver::withStencils(F&& f) {
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
-    kernels::gridToParticles<S, D, false, false, true>(p_, 0, p_.size(), geom, vg, vg, vg, dt_, flip_);
+    if constexpr (kernels::kCacheStencils<S>) {
+      using Cache = kernels::StencilCache<S, D>;
+      if (!stencilsValid_ || stencilOffset_.size() != p_.size()) {
+        stencilOffset_.resize(p_.size());
+        stencilRecord_.resize(p_.size() * Cache::kRecord);
+        const GridGeom geom = grid_->geom();
+        kernels::Stencil<S, D> st;
+        for (std::size_t i = 0; i < p_.size(); ++i) {
+          st.compute(p_, i, geom);
+          st.store(stencilOffset_[i], stencilRecord_.data() + i * Cache::kRecord, geom);
+        }
+        stencilsValid_ = true;
+      }
+      f.template operator()<S, D>(Cache{stencilOffset_.data(), stencilRecord_.data()});
+    } else {
+      f.template operator()<S, D>(kernels::EvaluatedStencils<S, D>{p_, {}});
+    }
   });
 }
 
-void MpmSolver::updateDeformationAndStress() {
-  const std::size_t n = p_.size();
-  const double dt = dt_;
-  for (std::size_t i = 0; i < n; ++i) {
-    double Fn[9];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        double s = p_.F[3 * a + b][i];
-        for (int c = 0; c < 3; ++c) s += dt * p_.L[3 * a + c][i] * p_.F[3 * c + b][i];
-        Fn[3 * a + b] = s;
-      }
-    for (int k = 0; k < 9; ++k) p_.F[k][i] = Fn[k];
-    const double J = Fn[0] * (Fn[4] * Fn[8] - Fn[5] * Fn[7]) - Fn[1] * (Fn[3] * Fn[8] - Fn[5] * Fn[6]) +
-                     Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
-    p_.vol[i] = p_.vol0[i] * J;
-  }
+template <class F>
+void MpmSolver::forParticleBlocks(F&& f) const {
+  constexpr std::size_t kBlock = 512;
   for (std::size_t m = 0; m < models_.size(); ++m) {
-    if (!models_[m]) continue;
     const auto [b, e] = p_.materialRange(static_cast<int>(m));
-    if (e > b) models_[m]->updateStress(p_, b, e, dt);
+    for (std::size_t k = b; k < e; k += kBlock) f(k, std::min(e, k + kBlock), models_[m].get());
+  }
+}
+
+template <bool kVelocity, bool kMove>
+void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double* const vn[3],
+                                         const double* const vGrad[3]) {
+  const GridGeom geom = grid_->geom();
+  withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
+    forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
+      kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
+      updateDeformation(b, e);
+      if (model) model->updateStress(p_, b, e, dt_);
+    });
+  });
+  if (kMove) stencilsValid_ = false;
+}
+
+void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
+  const double dt = dt_;
+  if (scene_.mesh.dim() == 3) {
+    for (std::size_t i = begin; i < end; ++i) {
+      double Fn[9];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          double s = p_.F[3 * a + b][i];
+          for (int c = 0; c < 3; ++c) s += dt * p_.L[3 * a + c][i] * p_.F[3 * c + b][i];
+          Fn[3 * a + b] = s;
+        }
+      for (int k = 0; k < 9; ++k) p_.F[k][i] = Fn[k];
+      p_.vol[i] = p_.vol0[i] * det(Mat3{Fn[0], Fn[1], Fn[2], Fn[3], Fn[4], Fn[5], Fn[6], Fn[7], Fn[8]});
+    }
+    return;
+  }
+  // 1D / 2D: L is zero outside the mesh's directions and F keeps the identity there, so those
+  // terms add exact zeros and are left out (the 3D formula's figures, bit for bit).
+  const bool two = scene_.mesh.dim() == 2;
+  for (std::size_t i = begin; i < end; ++i) {
+    const double F0 = p_.F[0][i], F1 = p_.F[1][i], F3 = p_.F[3][i], F4 = p_.F[4][i];
+    const double L0 = p_.L[0][i];
+    double n0 = F0 + dt * L0 * F0, n1 = F1 + dt * L0 * F1, n3 = F3, n4 = F4;
+    if (two) {
+      const double L1 = p_.L[1][i], L3 = p_.L[3][i], L4 = p_.L[4][i];
+      n0 += dt * L1 * F3;
+      n1 += dt * L1 * F4;
+      n3 = F3 + dt * L3 * F0 + dt * L4 * F3;
+      n4 = F4 + dt * L3 * F1 + dt * L4 * F4;
+    }
+    p_.F[0][i] = n0;
+    p_.F[1][i] = n1;
+    p_.F[3][i] = n3;
+    p_.F[4][i] = n4;
+    const double F8 = p_.F[8][i];
+    p_.vol[i] = p_.vol0[i] * (n0 * (n4 * F8) - n1 * (n3 * F8));
   }
 }
 
 void MpmSolver::computeInternalForces() {
   Grid& g = *grid_;
   if (scheme_->stressFirst) {
-    velocityGradientFrom(g.velocity);
-    updateDeformationAndStress();
+    const double* vg[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+    gridToParticlesAndStress<false, false>(vg, vg, vg);
   }
   double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
   const GridGeom geom = g.geom();
   const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
   const bool loads = !scene_.loads.empty() || surfaceForces_;
-  dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
-    kernels::internalForces<S, D>(p_, 0, p_.size(), geom, grav, loads, f);
+  withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
+    kernels::internalForces<D>(src, p_, 0, p_.size(), geom, grav, loads, f);
   });
   bcs_.fold(g.force, Parity::Vector);
   g.sumAndFill({&g.force});
@@ -347,24 +407,20 @@ void MpmSolver::gridToParticles() {
   const std::size_t np = p_.size();
   switch (scheme_->kind) {
     case UpdateScheme::USF:
-      dispatch(shape_, dim, [&]<class S, int D>() {
-        kernels::gridToParticles<S, D, true, true, false>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+      withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
+        kernels::gridToParticles<D, true, true, false>(src, p_, 0, np, geom, vL, vn, vL, dt_, flip_);
       });
+      stencilsValid_ = false;
       break;
     case UpdateScheme::USL:
-      dispatch(shape_, dim, [&]<class S, int D>() {
-        kernels::gridToParticles<S, D, true, true, true>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
-      });
-      updateDeformationAndStress();
+      gridToParticlesAndStress<true, true>(vL, vn, vL);
       break;
     case UpdateScheme::MUSL: {
-      dispatch(shape_, dim, [&]<class S, int D>() {
-        kernels::gridToParticles<S, D, true, false, false>(p_, 0, np, geom, vL, vn, vL, dt_, flip_);
-      });
       g.remap.fill(0.0);
       double* mom[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
-      dispatch(shape_, dim, [&]<class S, int D>() {
-        kernels::momentumToGrid<S, D>(p_, 0, np, geom, mom);
+      withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
+        kernels::gridToParticles<D, true, false, false>(src, p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+        kernels::momentumToGrid<D>(src, p_, 0, np, geom, mom);
       });
       bcs_.fold(g.remap, Parity::Vector);
       g.sumAndFill({&g.remap});
@@ -373,16 +429,14 @@ void MpmSolver::gridToParticles() {
         for (std::int64_t k = 0; k < g.numNodes(); ++k) mom[d][k] = m[k] > massFloor_ ? mom[d][k] / m[k] : 0.0;
       applyBC(g.remap);
       const double* vr[3] = {mom[0], mom[1], mom[2]};
-      dispatch(shape_, dim, [&]<class S, int D>() {
-        kernels::gridToParticles<S, D, false, true, true>(p_, 0, np, geom, vL, vn, vr, dt_, flip_);
-      });
-      updateDeformationAndStress();
+      gridToParticlesAndStress<false, true>(vL, vn, vr);
       break;
     }
   }
 }
 
 void MpmSolver::endStep() {
+  stencilsValid_ = false;
   time_ += dt_;
   ++step_;
   migrateAndSort(scene_.mpm.sort_particles && step_ % sortInterval_ == 0);
@@ -401,7 +455,21 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   const int me = comm_.rank();
   bool moving = false;
   if (comm_.size() > 1) dest.assign(n, me);
-  for (std::size_t i = 0; i < n; ++i) {
+  // One rank, no sort this step: only the check that every particle is inside the mesh (the cell
+  // test of the loop below without the cell: floor(q) < 0 <=> q < 0, floor(q) >= n <=> q >= n).
+  const bool needKeys = comm_.size() > 1 || forceSort || !p_.groupedByMaterial();
+  if (!needKeys) {
+    for (std::size_t i = 0; i < n && outside < 0; ++i)
+      for (int d = 0; d < dim; ++d) {
+        const double q = (p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d);
+        if (!(q >= 0.0 && q < mesh.cells()[d])) {
+          outside = p_.id[i];
+          for (int e = 0; e < 3; ++e) where[e] = p_.x[e][i];
+          break;
+        }
+      }
+  }
+  for (std::size_t i = 0; needKeys && i < n; ++i) {
     int c[3] = {0, 0, 0};
     for (int d = 0; d < dim; ++d) {
       c[d] = cellCoordinate(mesh, d, p_.x[d][i]);
@@ -471,7 +539,7 @@ void MpmSolver::migrateAndSort(bool forceSort) {
     }
     sortKey_ = std::move(keys);
   }
-  if (forceSort || received || !p_.groupedByMaterial()) p_.sortBy(sortKey_, perm_, scratch_);
+  if (needKeys && (forceSort || received || !p_.groupedByMaterial())) p_.sortBy(sortKey_, perm_, scratch_);
   p_.updateMaterialRanges(static_cast<int>(scene_.materials.size()));
 }
 

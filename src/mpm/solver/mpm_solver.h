@@ -49,7 +49,11 @@ class MpmSolver {
   [[nodiscard]] const core::Scene& scene() const { return scene_; }
   [[nodiscard]] const core::Decomposition& decomposition() const { return decomp_; }
   [[nodiscard]] const core::Comm& comm() const { return comm_; }
-  [[nodiscard]] ParticleSet& particles() { return p_; }
+  /// Writable particles: the step's cached stencils are recomputed before their next use.
+  [[nodiscard]] ParticleSet& particles() {
+    stencilsValid_ = false;
+    return p_;
+  }
   [[nodiscard]] const ParticleSet& particles() const { return p_; }
   [[nodiscard]] Grid& grid() { return *grid_; }
   [[nodiscard]] const Grid& grid() const { return *grid_; }
@@ -118,6 +122,7 @@ class MpmSolver {
   /// The state a step starts from (particles and clock); restore() returns to it. Local.
   [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_}; }
   void restore(const Checkpoint& c) {
+    stencilsValid_ = false;
     p_ = c.particles;
     time_ = c.time;
     step_ = c.step;
@@ -140,8 +145,21 @@ class MpmSolver {
   double stableTimeStep(std::size_t* limiting) const;
   void computeLoads();
   void assignArcAreas(int load);
-  void updateDeformationAndStress();
-  void velocityGradientFrom(const core::Field& v);
+  /// F = (I + dt L) F and V = V0 det F of particles [begin, end).
+  void updateDeformation(std::size_t begin, std::size_t end);
+  /// Calls f(begin, end, model) over this rank's particles in blocks of kBlock within each
+  /// material's range (model null for a material without one), so that a pass reading the grid
+  /// and the particle updates after it run on a block still in cache.
+  template <class F>
+  void forParticleBlocks(F&& f) const;
+  /// The grid-to-particle pass that gives L (kVelocity, kMove as in kernels::gridToParticles from
+  /// velocity field vGrad), then F, V and the stress, block by block.
+  template <bool kVelocity, bool kMove>
+  void gridToParticlesAndStress(const double* const vL[3], const double* const vn[3], const double* const vGrad[3]);
+  /// Calls f.template operator()<Shape, Dim>(cache) with this step's stencil cache, filled first
+  /// if particlesToGrid() did not fill it since the particles last moved.
+  template <class F>
+  void withStencils(F&& f);
   void migrateAndSort(bool forceSort);
   void applyBC(core::Field& v) const { bcs_.apply(v); }
 
@@ -163,6 +181,11 @@ class MpmSolver {
   double accelFloor_ = 0;  // linear: kSmallMassFraction x smallest particle mass; else massFloor_
   int sortInterval_ = kSortInterval;
   std::unique_ptr<NodeCellOperators> cells_;  // the MPM-ICE node-cell operators
+  // The step's stencils (kernels::StencilCache), filled by particlesToGrid(), used by the force
+  // and grid-to-particle passes; stale once the particles move or are written from outside.
+  std::vector<std::int64_t> stencilOffset_;
+  std::vector<double> stencilRecord_;
+  bool stencilsValid_ = false;
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;
