@@ -104,7 +104,11 @@ std::string describeUses(const std::vector<int>& components, ExchangePoint p, co
   for (std::size_t i = 0; i < components.size(); ++i) {
     if (components[i] == 0) continue;
     out += std::string(" ") + f.names[i];
-    if (f.components[i] > 1) out += "(" + std::to_string(components[i]) + ")";
+    if (f.components[i] > 1) {  // appended piece by piece (GCC 12's -Wrestrict misfires on "(" + s)
+      out += '(';
+      out += std::to_string(components[i]);
+      out += ')';
+    }
     any = true;
   }
   return any ? out : out + " nothing";
