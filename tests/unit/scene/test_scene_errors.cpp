@@ -61,7 +61,7 @@ std::vector<BadScene> badScenes() {
         "valid: ideal_gas, jwl, mie_gruneisen, stiffened_gas (did you mean 'ideal_gas'?)"}},
       {"unknown constitutive model", solidWith("{type: elastic_linear, bulk_modulus: 1e9, shear_modulus: 1e9}"),
        {"materials[0].model.type", "unknown constitutive model 'elastic_linear'",
-        "valid: j2_plasticity, linear_elastic, neo_hookean"}},
+        "valid: cowper_symonds, crushable_foam, j2_plasticity, linear_elastic, neo_hookean"}},
       {"negative shock viscosity", kBase + "ice: {shock_viscosity: {linear: -1}}\n",
        {"test.yaml:7:", "ice.shock_viscosity.linear: -1 is out of range"}},
       {"unknown shock viscosity key", kBase + "ice: {shock_viscosity: {quadratik: 1}}\n",
