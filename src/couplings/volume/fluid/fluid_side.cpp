@@ -24,7 +24,6 @@ void FluidSide::consumeAProduceB(double dt) {
 }
 
 void FluidSide::consumeCProduceD() {
-  for (auto& f : fields_) ice_.setExternalCouplingWork(f.material, all(f.couplingWork));
   ice_.computeSourcesAndLagrangian();
   for (auto& f : fields_) ice_.setExternalLagrangianMomentum(f.material, all(f.lagrangianMomentum));
   ice_.exchange();
@@ -65,8 +64,7 @@ SideTotals FluidSide::totals() const {
   SideTotals s;
   s.mass = t.mass;
   s.momentum = t.momentum;
-  s.kinetic = t.kinetic;
-  s.internal = t.energy - t.kinetic;
+  s.energy = t.energy;
   return s;
 }
 
