@@ -32,19 +32,33 @@ void Progress::start(const std::string& scene, const std::string& meshDescriptio
       << std::flush;
 }
 
+double Progress::fractionDone(double t, double tStart, double tEnd, long step, long maxSteps, long stepStart) {
+  const double span = tEnd - tStart;
+  double done = span > 0 ? (t - tStart) / span : 1.0;
+  if (maxSteps > stepStart) {
+    const double bySteps = double(step - stepStart) / double(maxSteps - stepStart);
+    if (bySteps > done) done = bySteps;
+  }
+  return done < 0 ? 0.0 : done > 1 ? 1.0 : done;
+}
+
+double Progress::etaFromFraction(double done, double wall) {
+  if (!(done > 0)) return -1.0;
+  return done < 1 ? wall * (1.0 - done) / done : 0.0;
+}
+
 double Progress::eta(double t, double tStart, double tEnd, double wall) {
   if (!(t > tStart)) return -1.0;
-  const double remaining = tEnd - t;
-  return remaining > 0 ? wall * remaining / (t - tStart) : 0.0;
+  return etaFromFraction(fractionDone(t, tStart, tEnd), wall);
 }
 
 std::string Progress::formatLine(int step, double t, double tStart, double tEnd, double dt, double wall,
-                                 const Extras& extras) {
-  const double span = tEnd - tStart;
-  const double pct = span > 0 ? 100.0 * (t - tStart) / span : 100.0;
+                                 const Extras& extras, long maxSteps, long stepStart) {
+  const double done = fractionDone(t, tStart, tEnd, step, maxSteps, stepStart);
   std::string s = "step " + std::to_string(step) + "  t = " + fmt("%.3e", t) + " / " + fmt("%.3e", tEnd) +
-                  " s (" + fmt("%.1f", pct) + "%)  dt = " + fmt("%.1e", dt) + "  wall " + fmt("%.1f", wall) + " s";
-  const double e = eta(t, tStart, tEnd, wall);
+                  " s (" + fmt("%.1f", 100.0 * done) + "%)  dt = " + fmt("%.1e", dt) + "  wall " +
+                  fmt("%.1f", wall) + " s";
+  const double e = etaFromFraction(done, wall);
   s += e >= 0 ? "  ETA " + fmt("%.1f", e) + " s" : std::string("  ETA --");
   for (const auto& [key, value] : extras) s += "  " + key + "=" + fmt("%g", value);
   return s;
@@ -58,7 +72,8 @@ bool Progress::step(int step, double t, double dt, const Extras& extras, bool fo
   const bool always = opts_.everySteps <= 0 && opts_.everySeconds <= 0;
   if (!(force || bySteps || byTime || always)) return false;
   lastPrint_ = now;
-  os_ << formatLine(step, t, tStart_, tEnd_, dt, now - wallStart_, extras) << '\n' << std::flush;
+  os_ << formatLine(step, t, tStart_, tEnd_, dt, now - wallStart_, extras, opts_.maxSteps, opts_.stepStart) << '\n'
+      << std::flush;
   return true;
 }
 

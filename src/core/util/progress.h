@@ -6,7 +6,10 @@
 ///   `step 1200  t = 1.200e-03 / 4.000e-03 s (30.0%)  dt = 1.0e-06  wall 12.3 s  ETA 28.7 s  iters=3`
 /// and is printed when at least `everySeconds` of wall time passed since the last line or when the
 /// step number is a multiple of `everySteps` (either may be 0 = off; both 0 = every step).
-/// ETA = elapsed wall * (t_end - t) / (t - t_start). The wall clock is injectable (seconds, any
+/// The fraction done is the larger of the simulated time's, (t - t_start) / (t_end - t_start), and,
+/// when time.max_steps ends the run, the steps' (step - step_start) / (max_steps - step_start), so a
+/// run cut by max_steps with a far time.end shows a true percentage and ETA;
+/// ETA = elapsed wall * (1 - done) / done. The wall clock is injectable (seconds, any
 /// origin) so tests decide the elapsed time; the default is std::chrono::steady_clock.
 #include <functional>
 #include <ostream>
@@ -21,6 +24,8 @@ namespace mpmice::core {
 struct ProgressOptions {
   double everySeconds = 10.0;
   int everySteps = 0;
+  long maxSteps = 0;   ///< time.max_steps (0 = none): the run may end by steps before t_end
+  long stepStart = 0;  ///< the step the run starts from (a restart's)
 };
 
 class Progress {
@@ -45,8 +50,13 @@ class Progress {
 
   /// The step line for given values (pure; what step() prints).
   static std::string formatLine(int step, double t, double tStart, double tEnd, double dt, double wall,
-                                const Extras& extras = {});
-  /// ETA in seconds, or a negative value when no simulated time has passed yet.
+                                const Extras& extras = {}, long maxSteps = 0, long stepStart = 0);
+  /// Fraction of the run done (0..1): the larger of the time's and the steps' (see above).
+  static double fractionDone(double t, double tStart, double tEnd, long step = 0, long maxSteps = 0,
+                             long stepStart = 0);
+  /// ETA in seconds for a fraction done, or a negative value when nothing is done yet.
+  static double etaFromFraction(double done, double wall);
+  /// ETA in seconds by the simulated time alone, or a negative value when no simulated time has passed yet.
   static double eta(double t, double tStart, double tEnd, double wall);
 
  private:

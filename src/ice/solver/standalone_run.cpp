@@ -61,7 +61,8 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     writer->writeStep(static_cast<int>(solver.steps()), solver.time(), ptrs);
     csv->row({double(solver.steps()), solver.time(), t.mass, t.momentum[0], t.momentum[1], t.momentum[2], t.energy});
   };
-  core::Progress progress(log, comm, solver.time(), scene.time.end);
+  core::Progress progress(log, comm, solver.time(), scene.time.end,
+                          core::ProgressOptions{10.0, 0, scene.time.max_steps, solver.steps()});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
   core::OutputSchedule outputs(scene.output.interval, scene.time.end);
   if (resumed)

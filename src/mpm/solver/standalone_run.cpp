@@ -22,7 +22,8 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (resumed) solver.loadCheckpoint(*resumed, "mpm");
   core::RunRecord record(scene, comm, "mpm_solver");
   const long long np = solver.globalParticleCount();
-  core::Progress progress(log, comm, solver.time(), scene.time.end, core::ProgressOptions{2.0, 0});
+  core::Progress progress(log, comm, solver.time(), scene.time.end,
+                          core::ProgressOptions{2.0, 0, scene.time.max_steps, solver.stepCount()});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
   if (comm.root())
     log << "  particles: " << np << "\n  shape function: " << scene.mpm.shape_function << ", update: "

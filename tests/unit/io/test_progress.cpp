@@ -22,6 +22,26 @@ TEST(Progress, EtaIsElapsedTimesRemainingOverDone) {
   EXPECT_NE(Progress::formatLine(0, 1.0, 1.0, 3.0, 0.1, 0.0).find("ETA --"), std::string::npos);
 }
 
+TEST(Progress, MaxStepsSetsTheFractionWhenItEndsTheRunFirst) {
+  // time.end far away, time.max_steps = 100: 25 steps done is 25 %, not 0.0 %, and the ETA is 3x the wall.
+  EXPECT_DOUBLE_EQ(Progress::fractionDone(1.0e-3, 0.0, 1.0e3, 25, 100), 0.25);
+  EXPECT_EQ(Progress::formatLine(25, 1.0e-3, 0.0, 1.0e3, 4.0e-5, 2.0, {}, 100),
+            "step 25  t = 1.000e-03 / 1.000e+03 s (25.0%)  dt = 4.0e-05  wall 2.0 s  ETA 6.0 s");
+  // A restart from step 50 of 100: 75 is half of what this run does.
+  EXPECT_DOUBLE_EQ(Progress::fractionDone(2.0, 1.0, 1.0e3, 75, 100, 50), 0.5);
+  // The time ends the run first: the steps do not lower the fraction.
+  EXPECT_DOUBLE_EQ(Progress::fractionDone(0.5, 0.0, 1.0, 2, 1000), 0.5);
+  std::ostringstream os;
+  const Comm serial;
+  double now = 0.0;
+  Progress p(os, serial, 0.0, 1.0e3, {.everySeconds = 0, .everySteps = 10, .maxSteps = 40}, [&] { return now; });
+  p.start("long", "1D, 10 cells", 1);
+  os.str("");
+  now = 1.0;
+  EXPECT_TRUE(p.step(10, 1.0e-3, 1.0e-4));
+  EXPECT_EQ(os.str(), "step 10  t = 1.000e-03 / 1.000e+03 s (25.0%)  dt = 1.0e-04  wall 1.0 s  ETA 3.0 s\n");
+}
+
 TEST(Progress, PrintsEveryKStepsOrEveryNSecondsWithInjectedClock) {
   double now = 100.0;
   std::ostringstream os;

@@ -62,7 +62,9 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
       resumed ? resumed->get("run.coupled") : std::vector<double>{0.0, 0.0, 0.0, 0.0, 0.0};
   if (clock.size() != 5) throw std::invalid_argument(resumed->source() + ": checkpoint entry 'run.coupled' is malformed");
 
-  core::Progress progress(log, comm, clock[0], scene.time.end, core::ProgressOptions{sides.solid ? 2.0 : 1e30, 0});
+  core::Progress progress(log, comm, clock[0], scene.time.end,
+                          core::ProgressOptions{sides.solid ? 2.0 : 1e30, 0, scene.time.max_steps,
+                                                static_cast<long>(clock[1])});
   const long long particles = sides.solid ? sides.solid->solver().globalParticleCount() : 0;
   if (sides.solid)
     progress.start(scene.name + " (" + label + ", schedule " + std::string(core::name(scene.coupling.schedule)) +
