@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <set>
 
+#include "study/factors.h"
 #include "study/key_path.h"
 #include "study/reference/references.h"
 
@@ -49,6 +50,69 @@ void checkRanks(const std::string& file, const YAML::Node& v, const std::string&
   if (r < 1) fail(file, key, "ranks must be an integer >= 1, got " + std::to_string(r));
 }
 
+/// A factor's levels: a mapping is the settings one level changes; anything else is one value of
+/// the key path the factor is named after.
+std::vector<Settings> levelsOf(const std::string& file, const std::string& where, const std::string& name,
+                               const YAML::Node& n) {
+  if (!n.IsSequence() || n.size() == 0)
+    fail(file, where, "expected a non-empty list of levels (values of '" + name + "', or mappings of key paths to values)");
+  std::vector<Settings> levels;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    if (n[i].IsMap()) {
+      levels.push_back(pairs(file, n[i], at));
+      continue;
+    }
+    try {
+      parseKeyPath(name);
+    } catch (const KeyPathError&) {
+      fail(file, at, "a level of a factor named '" + name + "' (not a key path) must be a mapping of key paths to values");
+    }
+    levels.push_back(Settings{{name, n[i]}});
+  }
+  return levels;
+}
+
+/// `base`, `factors` and `slices` (the one-factor-at-a-time form) into the points.
+std::vector<Point> factorPoints(const std::string& file, const YAML::Node& root) {
+  if (!root["base"]) fail(file, "base", "required with `factors`: the centre point, every varied key with its value");
+  const Settings base = pairs(file, root["base"], "base");
+  std::vector<Factor> factors;
+  if (!root["factors"].IsMap() || root["factors"].size() == 0)
+    fail(file, "factors", "expected a mapping of factor names (or key paths) to their levels");
+  for (const auto& kv : root["factors"]) {
+    const std::string name = kv.first.as<std::string>();
+    factors.push_back(Factor{name, levelsOf(file, "factors." + name, name, kv.second)});
+  }
+  std::vector<Slice> slices;
+  if (root["slices"]) {
+    if (!root["slices"].IsSequence()) fail(file, "slices", "expected a list of mappings (factor: all, or its levels)");
+    for (std::size_t i = 0; i < root["slices"].size(); ++i) {
+      const YAML::Node sl = root["slices"][i];
+      const std::string at = "slices[" + std::to_string(i) + "]";
+      if (!sl.IsMap() || sl.size() < 2) fail(file, at, "expected a mapping of two or more factors (factor: all, or its levels)");
+      Slice slice;
+      for (const auto& kv : sl) {
+        const std::string name = kv.first.as<std::string>();
+        if (kv.second.IsScalar() && kv.second.Scalar() == "all") {
+          const Factor* f = nullptr;
+          for (const auto& g : factors) f = g.name == name ? &g : f;
+          if (!f) fail(file, at + "." + name, "`all` needs a factor of that name in `factors`");
+          slice.factors.push_back(*f);
+        } else {
+          slice.factors.push_back(Factor{name, levelsOf(file, at + "." + name, name, kv.second)});
+        }
+      }
+      slices.push_back(slice);
+    }
+  }
+  try {
+    return expandFactors(base, factors, slices);
+  } catch (const std::invalid_argument& e) {
+    fail(file, "factors", e.what());
+  }
+}
+
 }  // namespace
 
 Study readStudy(const std::string& path) {
@@ -62,12 +126,13 @@ Study readStudy(const std::string& path) {
   } catch (const YAML::Exception& e) {
     fail(path, "", std::string("not valid YAML: ") + e.what());
   }
-  if (!root.IsMap()) fail(path, "", "expected a mapping (study, scene, program, reference, time_limit, set, axes, points)");
-  const std::set<std::string> known{"study", "scene", "program", "reference", "time_limit", "repeats", "set", "axes", "points"};
+  const std::string keys = "study, scene, program, reference, time_limit, repeats, set, axes, points, base, factors, slices";
+  if (!root.IsMap()) fail(path, "", "expected a mapping (" + keys + ")");
+  const std::set<std::string> known{"study",  "scene", "program", "reference", "time_limit", "repeats",
+                                    "set",    "axes",  "points",  "base",      "factors",    "slices"};
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
-    if (!known.count(k))
-      fail(path, k, "unknown key (valid: study, scene, program, reference, time_limit, repeats, set, axes, points)");
+    if (!known.count(k)) fail(path, k, "unknown key (valid: " + keys + ")");
   }
   s.name = root["study"] ? scalar(path, root["study"], "study") : fs::path(path).stem().string();
   if (s.name.empty() || s.name.find('/') != std::string::npos) fail(path, "study", "expected a name without '/'");
@@ -105,8 +170,15 @@ Study readStudy(const std::string& path) {
   if (root["set"]) s.set = pairs(path, root["set"], "set");
   for (const auto& [k, v] : s.set)
     if (k == "ranks") fail(path, "set", "'ranks' is an axis or a point setting, not a `set` entry");
-  if (root["axes"] && root["points"]) fail(path, "points", "give either `axes` (the full grid) or `points`, not both");
-  if (root["axes"]) {
+  const int forms = (root["axes"] ? 1 : 0) + (root["points"] ? 1 : 0) + (root["factors"] ? 1 : 0);
+  if (forms > 1)
+    fail(path, root["points"] ? "points" : "factors",
+         "give one form only: `axes` (the full grid), `points` (a list) or `factors` (one at a time), not both");
+  if ((root["base"] || root["slices"]) && !root["factors"])
+    fail(path, root["base"] ? "base" : "slices", "belongs to the one-factor-at-a-time form: `factors` is missing");
+  if (root["factors"]) {
+    s.points = factorPoints(path, root);
+  } else if (root["axes"]) {
     for (const auto& [k, v] : pairs(path, root["axes"], "axes")) {
       if (!v.IsSequence() || v.size() == 0) fail(path, "axes." + k, "expected a non-empty list of values");
       Axis a{k, {}};
@@ -120,7 +192,7 @@ Study readStudy(const std::string& path) {
     for (std::size_t i = 0; i < root["points"].size(); ++i)
       s.points.push_back(Point{pairs(path, root["points"][i], "points[" + std::to_string(i) + "]")});
   } else {
-    fail(path, "axes", "required: `axes` (the full grid) or `points` (an explicit list)");
+    fail(path, "axes", "required: `axes` (the full grid), `points` (an explicit list) or `factors` (one at a time)");
   }
   for (const auto& p : s.points)
     for (const auto& [k, v] : p.settings) {

@@ -11,6 +11,7 @@
 
 #include "core/scene/scene.h"
 
+#include "study/factors.h"
 #include "study/grid.h"
 #include "study/key_path.h"
 #include "study/pareto.h"
@@ -212,6 +213,70 @@ TEST_F(StudyFileTest, ReadsAGridAndAnExplicitList) {
   o.binDir = "/b";
   EXPECT_EQ(pointCommand(s, s.points[1], "x.yaml", o),
             (std::vector<std::string>{"/b/coupler/coupler", "run", "--bin-dir", "/b", "x.yaml"}));
+}
+
+TEST_F(StudyFileTest, OneFactorAtATimeThenSlicesEachPointOnce) {
+  const Study s = readStudy(write(
+      "base: {time.cfl: 0.4, coupling.schedule: monolithic, coupling.acceleration.type: none}\n"
+      "factors:\n"
+      "  time.cfl: [0.1, 0.7]\n"
+      "  schedule:\n"
+      "    - {coupling.schedule: implicit_serial, coupling.acceleration.type: iqn_ils}\n"
+      "    - {coupling.schedule: explicit_serial}\n"
+      "slices:\n"
+      "  - {time.cfl: [0.1, 0.4], schedule: all}\n"));
+  // base, 2 cfl levels, 2 schedules, then the 2 x 2 slice less the two points it shares with the factors.
+  std::vector<std::string> got;
+  for (const auto& p : s.points) got.push_back(values(p));
+  EXPECT_EQ(got, (std::vector<std::string>{"0.4,monolithic,none", "0.1,monolithic,none", "0.7,monolithic,none",
+                                            "0.4,implicit_serial,iqn_ils", "0.4,explicit_serial,none",
+                                            "0.1,implicit_serial,iqn_ils", "0.1,explicit_serial,none"}));
+  EXPECT_EQ(s.columns, (std::vector<std::string>{"time.cfl", "coupling.schedule", "coupling.acceleration.type"}));
+  const YAML::Node v = variantScene(s, YAML::LoadFile(TINY_CYLINDER), s.points[3], "/tmp/run3");
+  EXPECT_EQ(v["coupling"]["schedule"].as<std::string>(), "implicit_serial");
+  EXPECT_EQ(v["time"]["cfl"].as<double>(), 0.4);
+}
+
+TEST(Factors, TheBaseIsNotRewrittenByTheLevels) {
+  // yaml-cpp's Node assignment rewrites the node shared with the base: the expansion must not use it.
+  const Settings base{{"time.cfl", YAML::Load("0.4")}};
+  const auto pts = expandFactors(base, {Factor{"time.cfl", {{{"time.cfl", YAML::Load("0.1")}}}}}, {});
+  ASSERT_EQ(pts.size(), 2u);
+  EXPECT_EQ(values(pts[0]), "0.4");
+  EXPECT_EQ(values(pts[1]), "0.1");
+  EXPECT_EQ(valueText(base[0].second), "0.4");
+  EXPECT_THROW((void)expandFactors(base, {Factor{"k", {{{"mesh.spacing", YAML::Load("1")}}}}}, {}), std::invalid_argument);
+}
+
+TEST_F(StudyFileTest, OneFactorAtATimeBadInputNamesTheFileAndTheKey) {
+  const std::string head = "scene: " + std::string(TINY_CYLINDER) + "\nreference: lame_cylinder\n";
+  struct Case {
+    std::string body, key, says;
+  };
+  for (const Case& c : {
+           Case{"factors: {time.cfl: [0.1]}\n", "'base'", "required with `factors`"},
+           Case{"base: {time.cfl: 0.4}\naxes: {mesh.spacing: [0.1]}\n", "'base'", "`factors` is missing"},
+           Case{"base: {time.cfl: 0.4}\nfactors: {mesh.spacing: [0.1]}\n", "'factors'", "'mesh.spacing' is not in `base`"},
+           Case{"base: {time.cfl: 0.4}\nfactors: {time.cfl: []}\n", "'factors.time.cfl'", "non-empty list"},
+           Case{"base: {time.cfl: 0.4}\nfactors: {ice: [first_order]}\n", "factor 'ice'", "key 'ice' is not in `base`"},
+           Case{"base: {time.cfl: 0.4}\nfactors: {fast..one: [0.1]}\n", "'factors.fast..one[0]'", "must be a mapping"},
+           Case{"base: {time.cfl: 0.4, mesh.spacing: 0.1}\nfactors: {time.cfl: [0.1]}\nslices: [{time.cfl: all}]\n",
+                "'slices[0]'", "two or more factors"},
+           Case{"base: {time.cfl: 0.4, mesh.spacing: 0.1}\nfactors: {time.cfl: [0.1]}\n"
+                "slices: [{time.cfl: all, spacing: all}]\n", "'slices[0].spacing'", "`all` needs a factor"},
+           Case{"base: {time.cfl: 0.4}\nfactors: {time.cfl: [0.1]}\npoints: [{time.cfl: 0.2}]\n", "'points'", "not both"},
+       }) {
+    const std::string f = write(head + c.body, "# a bad study\n");
+    try {
+      (void)readStudy(f);
+      ADD_FAILURE() << "accepted:\n" << c.body;
+    } catch (const StudyError& e) {
+      const std::string w = e.what();
+      EXPECT_EQ(w.rfind(f + ": ", 0), 0u) << w;
+      EXPECT_NE(w.find(c.key), std::string::npos) << w;
+      EXPECT_NE(w.find(c.says), std::string::npos) << w;
+    }
+  }
 }
 
 TEST_F(StudyFileTest, RanksRunMpmiceUnderTheLaunchHelper) {
