@@ -14,6 +14,7 @@
 // With a plot prefix it writes <prefix>.csv (the particles nearest the x-axis: r, sigma_r,
 // sigma_theta and the Lame values) and <prefix>.png through gnuplot.
 // 1. Find the last step's files.  2. Read P.  3. Particle stresses -> error.  4. Profile + plot.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +61,31 @@ int main(int argc, char** argv) {
                 "interior: %zu particles, mean error %.4g\n", nBand, nBand ? r.bandError / double(nBand) : 0.0,
                 err > 0 ? 100.0 * r.bandError / (err * double(n)) : 0.0, n - nBand,
                 n > nBand ? r.coreError / double(n - nBand) : 0.0);
+    // 3b. The error by band as docs/mpm.md measures MPM alone (mpm_study lame_bands): Eq. 13 sum
+    //     by distance from the nearer curved surface in cells, [0,1) [1,2) [2,4) [4,8) [8,...),
+    //     and the signed means of the first cell at the inner and at the outer surface.
+    {
+      double acc[5] = {0, 0, 0, 0, 0}, sgn[5] = {0, 0, 0, 0, 0}, cnt[5] = {0, 0, 0, 0, 0}, sIn = 0, sOut = 0;
+      std::size_t nIn = 0, nOut = 0;
+      for (std::size_t q = 0; q < n; ++q) {
+        const double rad = std::hypot(r.x[3 * q], r.x[3 * q + 1]);
+        const double e = (r.stress[sc * q] + r.stress[sc * q + 1] - r.sum) / r.sum;
+        const double t = std::min(rad - kRi, kRo - rad) / dx;
+        const int bin = t < 1 ? 0 : t < 2 ? 1 : t < 4 ? 2 : t < 8 ? 3 : 4;
+        acc[bin] += std::fabs(e);
+        sgn[bin] += e;
+        cnt[bin] += 1;
+        if (rad - kRi < dx) sIn += e, ++nIn;
+        if (kRo - rad < dx) sOut += e, ++nOut;
+      }
+      const double N = double(n);
+      std::printf("cylinder_lame: bands | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | (total, 0-1, 1-2, 2-4, 4-8, >=8 dx); "
+                  "signed mean 0-1 dx inner %+.4f (%zu), outer %+.4f (%zu)\n", err, acc[0] / N, acc[1] / N, acc[2] / N,
+                  acc[3] / N, acc[4] / N, nIn ? sIn / double(nIn) : 0.0, nIn, nOut ? sOut / double(nOut) : 0.0, nOut);
+      std::printf("cylinder_lame: signed mean per particle by band (0-1, 1-2, 2-4, 4-8, >=8 dx):");
+      for (int k = 0; k < 5; ++k) std::printf(" %+.4f", cnt[k] > 0 ? sgn[k] / cnt[k] : 0.0);
+      std::printf("\n");
+    }
     // 4. Profile near the x-axis and plot.
     if (args.size() > 1) {
       const std::string prefix = args[1];

@@ -29,15 +29,27 @@ RunCounts parseRunLog(const std::string& text) {
   return c;
 }
 
-namespace {
-std::string lastLine(const std::string& text) {
+std::string programNote(const std::string& text) {
+  // Open MPI's own text: blocks between lines of dashes (the MPI_ABORT banner, "mpirun detected
+  // that ..."), lines tagged [host:pid], and the launcher's own lines.
+  static const std::regex rule(R"(^\s*-{10,}\s*$)");
+  static const std::regex tagged(R"(^\[[^\]]*:\d+\])");
+  static const std::regex launcher(R"(^(prterun|mpirun|orterun|Primary job|PRTE|--> ))");
   std::istringstream in(text);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
+  std::string line, last, ours;
+  bool inBanner = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (std::regex_search(line, rule)) {
+      inBanner = !inBanner;
+      continue;
+    }
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    last = line;
+    if (!inBanner && !std::regex_search(line, tagged) && !std::regex_search(line, launcher)) ours = line;
+  }
+  return ours.empty() ? last : ours;
 }
-}  // namespace
 
 PointResult runPoint(const std::vector<std::string>& argv, const std::string& runDir, double timeLimit, int repeats,
                      const Reference& ref, const RunFiles& files) {
@@ -77,7 +89,7 @@ PointResult runPoint(const std::vector<std::string>& argv, const std::string& ru
   }
   if (run.status != 0) {
     r.status = "failed";
-    r.note = lastLine(text.str());
+    r.note = programNote(text.str());
     return r;
   }
   try {

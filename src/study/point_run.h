@@ -18,6 +18,12 @@ struct RunCounts {
 };
 RunCounts parseRunLog(const std::string& text);
 
+/// The line that says why a failed run ended: the last non-empty line of our programs' text,
+/// skipping Open MPI's (its banners between lines of dashes after an MPI_Abort, lines tagged
+/// [host:pid], the launcher's own prterun/mpirun lines); the last non-empty line when nothing else
+/// is left.
+std::string programNote(const std::string& text);
+
 /// The outcome of one point.
 struct PointResult {
   std::string status;  // ok, failed, timeout, no_error (the run ended 0 but the reference could not measure it)
@@ -28,7 +34,7 @@ struct PointResult {
   long steps = -1;
   double iterationsPerStep = -1;
   double error = 0;    // NaN unless status is ok
-  std::string note;    // why the error is missing (the reference's message), or the log's last line
+  std::string note;    // why the error is missing (the reference's message), or programNote() of the log
   int stoppedBy = 0;   // the study got SIGINT / SIGTERM (forwarded to the run): no result
 };
 

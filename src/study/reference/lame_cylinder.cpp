@@ -11,8 +11,9 @@ namespace mpmice::study {
 using core::Centering;
 using core::OutputReader;
 
-Annulus annulusFromScene(const std::string& file) {
-  const core::Scene s = core::loadScene(file);
+Annulus annulusFromScene(const std::string& file) { return annulusOf(core::loadScene(file), file); }
+
+Annulus annulusOf(const core::Scene& s, const std::string& file) {
   Annulus a;
   a.fromScene = true;
   int solid = -1;
@@ -35,6 +36,10 @@ Annulus annulusFromScene(const std::string& file) {
         a.pAmbient = *r.pressure;
   if (a.pAmbient < 0) throw std::runtime_error(file + ": no outflow boundary or fluid region gives the ambient pressure");
   return a;
+}
+
+double lameSum(const Annulus& a, double P) {
+  return 2 * ((P - a.pRef) * a.ri * a.ri - (a.pAmbient - a.pRef) * a.ro * a.ro) / (a.ro * a.ro - a.ri * a.ri);
 }
 
 LameError lameError(const std::string& dir, const std::string& scene, const Annulus& geo) {
@@ -60,7 +65,7 @@ LameError lameError(const std::string& dir, const std::string& scene, const Annu
   if (pn == 0) throw std::runtime_error(files.grid + ": no cell inside 0.8 r_i to measure the pressure");
   r.P = psum / double(pn);
   // Lame: sigma_r = A - B / r^2, sigma_theta = A + B / r^2 (from the stress-free reference).
-  r.A = ((r.P - geo.pRef) * kRi * kRi - (geo.pAmbient - geo.pRef) * kRo * kRo) / (kRo * kRo - kRi * kRi);
+  r.A = 0.5 * lameSum(geo, r.P);
   r.B = (r.P - geo.pAmbient) * kRi * kRi * kRo * kRo / (kRo * kRo - kRi * kRi);
   r.sum = 2 * r.A;
   // Particles.

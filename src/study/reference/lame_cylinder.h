@@ -8,6 +8,10 @@
 
 #include "study/reference/output_files.h"
 
+namespace mpmice::core {
+struct Scene;
+}
+
 namespace mpmice::study {
 
 /// What the exact solution needs from the scene.
@@ -20,6 +24,12 @@ struct Annulus {
 /// region outside the annulus), p_ref from the solid's EOS threshold_pressure. Throws naming the
 /// file when the scene has no solid annulus or no ambient pressure.
 Annulus annulusFromScene(const std::string& sceneFile);
+/// The same from a scene in memory (`file` names it in the errors).
+Annulus annulusOf(const core::Scene& scene, const std::string& file);
+
+/// The exact Lame sum sigma_r + sigma_theta = 2 ((P - p_ref) r_i^2 - (p_amb - p_ref) r_o^2) /
+/// (r_o^2 - r_i^2) (stress from the stress-free reference at p_ref), P the inner pressure.
+double lameSum(const Annulus& annulus, double P);
 
 /// Everything the measure computes.
 struct LameError {

@@ -363,6 +363,28 @@ TEST(RunLog, ClosingLinesGiveStepsAndIterations) {
   EXPECT_EQ(c.steps, -1);
 }
 
+TEST(RunLog, TheNoteOfAFailedRunIsOurLastLineNotOpenMpisBanner) {
+  const std::string aborted =
+      "step 12 t = 3.1e-5\n"
+      "mpmice: health check: air at 1.05e9 K in cell (39,5,0) at t = 1.091e-03 s\n"
+      "--------------------------------------------------------------------------\n"
+      "MPI_ABORT was invoked on rank 0 in communicator MPI_COMM_WORLD\n"
+      "  Proc: [[41020,1],0]\n"
+      "  Errorcode: 1\n"
+      "\n"
+      "NOTE: invoking MPI_ABORT causes Open MPI to kill all MPI processes.\n"
+      "You may or may not see output from the other processes, depending on\n"
+      "exactly when Open MPI kills them.\n"
+      "--------------------------------------------------------------------------\n"
+      "[host:01234] 1 more process has sent help message help-mpi-api.txt / mpi-abort\n"
+      "prterun has exited due to process rank 0 with PID 0 on node host calling\n";
+  EXPECT_EQ(programNote(aborted), "mpmice: health check: air at 1.05e9 K in cell (39,5,0) at t = 1.091e-03 s");
+  EXPECT_EQ(programNote("a\nconfigs/x.yaml:3: key 'mesh.spacing': -1 is not > 0\n\n"),
+            "configs/x.yaml:3: key 'mesh.spacing': -1 is not > 0");
+  const std::string onlyBanner = "-----------\nMPI_ABORT was invoked\n-----------\n";
+  EXPECT_EQ(programNote(onlyBanner), "MPI_ABORT was invoked");
+}
+
 TEST(RunLog, AResultReadsBack) {
   PointResult r;
   r.status = "ok";

@@ -1,0 +1,103 @@
+// The seed cylinder's accuracy is not tied to its own radii and pressure (issue 14): the shipped
+// scene (configs/pressurized_cylinder.yaml, its settings as they are) and another annulus made
+// from it - other radii (0.3 .. 0.6 m instead of 0.5 .. 1.0), another inner pressure (10 MPa
+// instead of 19.4) - both at 10 cells across the wall, run through the coupling to the scene's
+// end. The Eq. 13 error of each against the exact Lame sum (src/study/reference/lame_cylinder.h:
+// r_i, r_o, p_amb and p_ref from the scene, P the mean pressure inside 0.8 r_i) is asserted, and
+// the other annulus's error must be of the same size as the seed's: within a factor 1.15 either way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "coupled_run.h"
+#include "mpm/particles/particle_set.h"
+#include "serial_mpi.h"
+#include "study/reference/lame_cylinder.h"
+
+namespace mpmice::test {
+namespace {
+
+constexpr int kCellsAcrossTheWall = 10;
+// Measured (2026-12-02, bspline2 4x4 as shipped): seed 0.0759, other annulus 0.0761 (ratio 1.003),
+// 9 s of CPU for both. With 10 atm outside the other annulus gives 0.1081 (1.42 x the seed): the
+// coupling's dependence on the ambient pressure (issue 14), not asserted here.
+constexpr double kOtherAmbient = 101325;
+constexpr double kSameSize = 1.15;  // the other annulus's error within this factor of the seed's
+constexpr double kSeedErrorBound = 0.080;  // the shipped settings at dx 0.05: 0.0759 measured
+
+/// The shipped scene with the annulus r_i .. r_o (the mesh 1.2 r_o wide, as the seed's), spacing
+/// (r_o - r_i) / 10, and the source's power set to heat the inside air to about P over its
+/// interval (the wall's expansion ignored, as the scene's comment does).
+core::Scene annulusScene(double ri, double ro, double P, double ambient) {
+  core::Scene s = core::loadScene(CYLINDER_SCENE);
+  const double L = 1.2 * ro, dx = (ro - ri) / kCellsAcrossTheWall;
+  const int n = static_cast<int>(std::lround(L / dx));
+  s.mesh = core::Mesh(2, s.mesh.origin(), {dx, dx, 1}, {n, n, 1});
+  const auto setAnnulus = [&](core::ShapeSpec& a) {
+    a.inner_radius = ri;
+    a.outer_radius = ro;
+  };
+  double p0 = 0, gamma = 1.4;
+  for (auto& r : s.geometry) {
+    if (r.shape.type == "annulus") setAnnulus(r.shape);
+    if (r.shape.type == "difference") {
+      r.shape.children.at(0).hi = {L, L, 0};
+      setAnnulus(r.shape.children.at(1));
+      r.pressure = ambient;
+      p0 = ambient;
+      gamma = s.material(r.fill.at(0).material)->eos.get("gamma", 1.4);
+    }
+  }
+  for (auto& b : s.boundary)
+    if (b.pressure) b.pressure = ambient;
+  for (auto& src : s.sources) {
+    src.shape.radius = ri;
+    src.power_density = (P - p0) / (gamma - 1) / (src.end - src.start);
+  }
+  return s;
+}
+
+struct AnnulusError {
+  double error = 0, P = 0;
+};
+
+/// Runs the scene to its end and measures Eq. 13 as cylinder_lame does.
+AnnulusError runAnnulus(const core::Scene& scene, const char* label) {
+  const study::Annulus a = study::annulusOf(scene, label);
+  CoupledRun run(scene);
+  run.runTo(scene.time.end);
+  const core::Mesh& mesh = run.scene.mesh;
+  const core::Box& b = run.ice.ownedBox();
+  double psum = 0;
+  int pn = 0;
+  for (int j = b.lo[1]; j <= b.hi[1]; ++j)
+    for (int i = b.lo[0]; i <= b.hi[0]; ++i)
+      if (std::hypot(mesh.cellCenter(0, i), mesh.cellCenter(1, j)) < 0.8 * a.ri) {
+        psum += run.ice.pressure()(i, j, 0);
+        ++pn;
+      }
+  EXPECT_GT(pn, 0);
+  AnnulusError out;
+  out.P = psum / pn;
+  const double S = study::lameSum(a, out.P);
+  const auto& p = run.mpm.particles();
+  double err = 0;
+  for (std::size_t q = 0; q < p.size(); ++q) err += std::abs(p.stress[mpm::kXX][q] + p.stress[mpm::kYY][q] - S) / S;
+  out.error = err / double(p.size());
+  std::printf("%s: r %.3g .. %.3g m, dx %.4g m, %zu particles, %ld steps, P = %.4g Pa, Eq. 13 error %.4f\n", label, a.ri,
+              a.ro, mesh.dx(0), p.size(), run.steps, out.P, out.error);
+  return out;
+}
+
+TEST(CylinderAnnulus, AnotherAnnulusHasTheSeedsErrorAtTheSameCellsAcrossTheWall) {
+  const AnnulusError seed = runAnnulus(annulusScene(0.5, 1.0, 19.4e6, 101325), "seed annulus");
+  const AnnulusError other = runAnnulus(annulusScene(0.3, 0.6, 10.0e6, kOtherAmbient), "other annulus");
+  EXPECT_NEAR(other.P, 10.0e6, 0.05 * 10.0e6) << "the source heats the inside air to about 10 MPa";
+  EXPECT_LT(seed.error, kSeedErrorBound) << "the seed at 10 cells across the wall";
+  EXPECT_LT(other.error, kSameSize * seed.error);
+  EXPECT_GT(other.error, seed.error / kSameSize);
+}
+
+}  // namespace
+}  // namespace mpmice::test
