@@ -10,11 +10,12 @@ charge"). The water's Hugoniot (Us = c0 + s up, p - p0 = rho0 Us up) then gives,
 simulated speed, the particle velocity and pressure to compare with the simulated ones, and the
 slides' 2700 +- 250 m/s its band.
 
-    scripts/python benchmarks/underwater/shock_front.py output/underwater_foam_2d [--out DIR]
+    scripts/python benchmarks/underwater/shock_front.py output/underwater_foam_2d [--out DIR] [--png F]
 """
 import argparse
 import glob
 import os
+import subprocess
 
 import h5py
 import numpy as np
@@ -29,6 +30,7 @@ def main():
     ap.add_argument("--out", default=None, help="directory for shock_front.csv (default: the run's)")
     ap.add_argument("--window", nargs=2, type=float, default=[0.01, 0.06],
                     help="distances below the charge's bottom [m] over which the speed is fitted")
+    ap.add_argument("--png", default=None, help="gnuplot figure: front depth against time, peak pressure against depth")
     ap.add_argument("--expect-speed", nargs=2, type=float, default=None, metavar=("LO", "HI"),
                     help="exit 1 unless the fitted shock speed lies in [LO, HI] m/s")
     ap.add_argument("--hugoniot-tolerance", type=float, default=None,
@@ -108,6 +110,26 @@ def main():
         failed = True
     if failed:
         raise SystemExit(1)
+    if args.png:
+        csv = os.path.join(out, "shock_front.csv")
+        t0 = float(np.mean(r[sel, 0]))
+        d0 = float(np.mean(r[sel, 2]))
+        gp = (f"set terminal pngcairo size 1200,500; set output '{args.png}'; set datafile separator ',';"
+              "set multiplot layout 1,2; set grid; set key top left;"
+              "set xlabel 'time [us]'; set ylabel 'front depth below the charge [cm]';"
+              f"plot '{csv}' skip 1 using ($1*1e6):($3*100) with linespoints pt 7 title 'simulated front (axis)', "
+              f"{d0*100} + 2700e-4*(x - {t0*1e6}) dt 2 title '2700 m/s (slides)', "
+              f"{d0*100} + 2450e-4*(x - {t0*1e6}) dt 3 lc rgb 'gray' title '2450 / 2950 m/s', "
+              f"{d0*100} + 2950e-4*(x - {t0*1e6}) dt 3 lc rgb 'gray' notitle;"
+              "set xlabel 'front depth below the charge [cm]'; set ylabel 'pressure [GPa]'; set key top right;"
+              f"plot '{csv}' skip 1 using ($3*100):($4/1e9) with linespoints pt 7 title 'simulated peak pressure', "
+              f"{(P0 + RHO0 * 2700 * (2700 - C0) / S)/1e9} dt 2 title 'Hugoniot pressure at 2700 m/s';"
+              "unset multiplot")
+        try:
+            subprocess.run(["gnuplot", "-e", gp], check=True)
+            print(f"wrote {args.png}")
+        except (OSError, subprocess.CalledProcessError) as e:
+            print(f"gnuplot: {e} (the CSV file is written)")
 
 
 if __name__ == "__main__":
