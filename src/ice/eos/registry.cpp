@@ -80,7 +80,8 @@ const std::map<std::string, Maker>& registry() {
        [](const core::ModelSpec& s, double cv) {
          return std::unique_ptr<Eos>(new MieGruneisen(param(s, "reference_density", true), param(s, "sound_speed", true),
                                                       param(s, "slope", false), param(s, "gruneisen", true),
-                                                      param(s, "reference_pressure", false), cv));
+                                                      param(s, "reference_pressure", false), cv,
+                                                      s.has("reference_temperature") ? param(s, "reference_temperature", false) : 0.0));
        }},
       {"jwl",
        [](const core::ModelSpec& s, double cv) {

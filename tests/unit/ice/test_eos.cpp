@@ -114,3 +114,21 @@ TEST(IceEos, MissingAndBadParameters) {
   EXPECT_THROW((void)ice::makeEos(spec("ideal_gas", {{"gamma", 0.9}}), 716.0), std::invalid_argument);
   EXPECT_THROW((void)ice::makeEos(spec("ideal_gas", {{"gamma", 1.4}}), -1.0), std::invalid_argument);
 }
+
+// Mie-Gruneisen's reference state (rho0, p0) has e = 0; `reference_temperature` T0 puts it at T0
+// (T = T0 + e / cv) instead of 0 K, where the health check stopped a water started at rho0, p0
+// at the first round-off (configs/underwater_foam_2d.yaml). The pressure law is unchanged.
+TEST(IceEos, MieGruneisenReferenceTemperature) {
+  std::map<std::string, double> water{{"reference_density", 1000}, {"sound_speed", 1480}, {"slope", 1.92},
+                                      {"gruneisen", 0.35}, {"reference_pressure", 1e5}};
+  const auto cold = ice::makeEos(spec("mie_gruneisen", water), 4186.0);
+  water["reference_temperature"] = 300.0;
+  const auto warm = ice::makeEos(spec("mie_gruneisen", water), 4186.0);
+  const double e0 = warm->internalEnergy(1000.0, 1e5);
+  EXPECT_NEAR(e0, 0.0, 1e-6);
+  EXPECT_NEAR(cold->temperature(1000.0, e0), 0.0, 1e-9);
+  EXPECT_NEAR(warm->temperature(1000.0, e0), 300.0, 1e-9);
+  EXPECT_NEAR(warm->densityFromPT(1e5, 300.0), 1000.0, 1e-9);
+  EXPECT_NEAR(warm->temperature(1000.0, warm->energyFromTemperature(1000.0, 350.0)), 350.0, 1e-9);
+  EXPECT_DOUBLE_EQ(warm->pressure(1050.0, 2e4), cold->pressure(1050.0, 2e4));
+}
