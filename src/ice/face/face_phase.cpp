@@ -112,11 +112,41 @@ double riemannDissipation(const IceState& st, const int* l, int i, int j, int k,
   const int r[3] = {i, j, k};
   const CellMix L = cellMix(st, l, d), R = cellMix(st, r, d);
   const double du = R.u - L.u;
-  if (!(du < 0) || !(L.z > 0 && R.z > 0)) return 0.0;
-  const double wL = L.z - kShockImpedanceSlope * L.rho * du, wR = R.z - kShockImpedanceSlope * R.rho * du;
-  return -wL * wR / (wL + wR) * du;
+  return -riemannImpedance(L.z, L.rho, R.z, R.rho, du) * du;
 }
 }  // namespace
+
+double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du) {
+  if (!(du < 0) || !(zL > 0 && zR > 0)) return 0.0;
+  const double wL = zL - kShockImpedanceSlope * rhoL * du, wR = zR - kShockImpedanceSlope * rhoR * du;
+  return wL * wR / (wL + wR);
+}
+
+double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
+                              std::int64_t* cell) {
+  const int dim = mesh.dim();
+  const core::Box& sb = st.press.box();
+  double rate = 0;
+  forEach(owned, [&](int i, int j, int k) {
+    const int c[3] = {i, j, k};
+    double s = 0, rho = 0;
+    for (int d = 0; d < dim; ++d) {
+      int lo[3] = {i, j, k}, hi[3] = {i, j, k};
+      lo[d] -= 1;
+      hi[d] += 1;
+      const CellMix L = cellMix(st, lo, d), C = cellMix(st, c, d), R = cellMix(st, hi, d);
+      rho = C.rho;
+      s += (riemannImpedance(L.z, L.rho, C.z, C.rho, C.u - L.u) + riemannImpedance(C.z, C.rho, R.z, R.rho, R.u - C.u)) /
+           mesh.dx(d);
+    }
+    s = rho > 0 ? s / rho : 0.0;
+    if (s > rate) {
+      rate = s;
+      if (cell) *cell = sb.index(i, j, k);
+    }
+  });
+  return rate;
+}
 
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann) {
   const bool q = q1 > 0 || q2 > 0;
@@ -140,19 +170,10 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
 
 // With external materials the energy correction is off, so the Riemann term's work would not
 // return as heat: coupled runs keep the average (docs/ice.md "Face pressure").
-// The impedances need kappa in the ghost cells (the equilibrium fills the other fields' ghosts).
+// The impedances need kappa in the ghost cells: the equilibrium fills them with the other fields'
+// (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
 void IceSolver::computeFacePressure() {
-  const bool riemann = riemannFacePressure_ && !anyExternal_;
-  if (riemann) {
-    std::vector<std::pair<core::Field*, FieldKind>> fs;
-    std::vector<int> mats;
-    for (int r = 0; r < numMaterials(); ++r) {
-      fs.push_back({&st_.mat[r].kappa, FieldKind::Scalar});
-      mats.push_back(r);
-    }
-    fillGhosts(fs, mats);
-  }
-  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemann);
+  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn());
 }
 
 }  // namespace mpmice::ice

@@ -8,6 +8,7 @@
 
 #include "core/health/health.h"
 #include "ice/ice_constants.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -42,6 +43,10 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
       fs.insert(fs.end(), {{&m.mass, FieldKind::Mass}, {&m.vel, FieldKind::Velocity}, {&m.eint, FieldKind::Energy},
                            {&m.spvol, FieldKind::SpecificVolume}, {&m.theta, FieldKind::VolumeFraction}});
       mats.insert(mats.end(), {r, r, r, r, r});
+      if (riemannFacePressureOn()) {  // the face impedances (face pressure, stable step)
+        fs.push_back({&m.kappa, FieldKind::Scalar});
+        mats.push_back(r);
+      }
     }
   }
   if (!lagrangian) {
@@ -104,13 +109,23 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
   // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
   // while m / (theta V) stays the cell's real mass.
+  // The Riemann face pressure's dissipation (-Z du at faces in compression) is an explicit
+  // diffusion of velocity too (nu = Z dx / rho): its rate R = max_cells sum_d (Z_lo + Z_hi) /
+  // (rho dx_d) adds to the viscous one, dt <= 1 / (2 nu sum_d dx_d^-2 + R). A velocity
+  // checkerboard (one face in compression per cell and direction) keeps its amplitude there.
+  double inv2 = 0;
+  for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
+  double rRate = 0, localR = 0;
+  std::int64_t rCell = -1;
+  if (riemannFacePressureOn()) {
+    localR = riemannDissipationRate(st_, mesh_, owned_, &rCell);
+    rRate = comm_.max(localR);
+  }
   double nu = 0, localNu = 0;
   std::int64_t nuCell = -1;
   int nuMaterial = -1;
   bool viscous = false;
   if (anyViscous_) {
-    double inv2 = 0;
-    for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
     for (int r = 0; r < nm; ++r) {
       const MaterialState& m = st_.mat[r];
       if (m.external || !(m.viscosity > 0)) continue;
@@ -126,19 +141,28 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       });
     }
     nu = comm_.max(localNu);
-    if (nu > 0 && 1.0 / (2.0 * nu * inv2) < dt) {
-      dt = 1.0 / (2.0 * nu * inv2);
-      viscous = true;
-    }
+  }
+  const double diffusive = 2.0 * nu * inv2 + rRate;
+  if (diffusive > 0 && 1.0 / diffusive < dt) {
+    dt = 1.0 / diffusive;
+    viscous = true;
   }
   if (where) {
     *where = {};
-    if (viscous) {
-      where->limit = "the ICE explicit viscous bound 1 / (2 nu sum_d dx_d^-2)";
+    if (viscous && 2.0 * nu * inv2 >= rRate) {
+      where->limit = rRate > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (2 nu sum_d dx_d^-2 + R)"
+                               : "the ICE explicit viscous bound 1 / (2 nu sum_d dx_d^-2)";
       where->here = localNu == nu;
       where->cell = nuCell;
       where->material = nuMaterial;
       where->value = nu;
+    } else if (viscous) {
+      where->limit = nu > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (2 nu sum_d dx_d^-2 + R)"
+                            : "the ICE Riemann face-pressure bound 1 / R";
+      where->here = localR == rRate;
+      where->cell = rCell;
+      where->riemann = true;
+      where->value = rRate;
     } else if (rate > 0 && cfl_ / rate < dtMax_) {
       where->limit = semiImplicit_ ? "the ICE CFL bound (convective, sound speed share)"
                                    : "the ICE CFL bound (convective + acoustic)";
@@ -171,7 +195,10 @@ std::string IceSolver::stableTimeStepLimit() const {
   if (b.material >= 0) {
     os << ", fluid '" << st_.mat[b.material].name << "', nu = " << b.value << " m^2/s";
   } else {
-    os << ", sum_d (|u_d| + c) / dx_d = " << b.value << " 1/s; materials:";
+    if (b.riemann)
+      os << ", R = sum_d (Z_lo + Z_hi) / (rho dx_d) = " << b.value << " 1/s; materials:";
+    else
+      os << ", sum_d (|u_d| + c) / dx_d = " << b.value << " 1/s; materials:";
     const double V = mesh_.cellVolume();
     const std::int64_t c = b.cell;
     for (const MaterialState& m : st_.mat) {

@@ -136,6 +136,7 @@ class IceSolver {
     bool here = false;
     std::int64_t cell = -1;
     int material = -1;
+    bool riemann = false;  // the value is the Riemann dissipation rate (riemannDissipationRate)
     double value = 0;
   };
   double stableTimeStep(StepBound* where) const;
@@ -166,6 +167,9 @@ class IceSolver {
   int limiter_ = 1;
   double q1_ = 0, q2_ = 0;  // shock viscosity (linear, quadratic)
   bool riemannFacePressure_ = true;  // ice.face_pressure: riemann (fluids only)
+  /// The Riemann face pressure is in use: asked for, and no external materials (coupled runs
+  /// keep the average: the energy correction that returns its work as heat is off there).
+  [[nodiscard]] bool riemannFacePressureOn() const { return riemannFacePressure_ && !anyExternal_; }
   double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
   int solverMaxIt_ = 1000;
   core::RealVect gravity_{0, 0, 0};

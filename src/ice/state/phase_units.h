@@ -23,6 +23,17 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
 /// harmonic mean of the mixture densities, c_f the smaller mixture sound speed); with riemann the
 /// two-shock approximate Riemann dissipation -W_L W_R / (W_L + W_R) du at faces in compression,
 /// W = rho (c + kShockImpedanceSlope |du|) of each cell (mixture density and Wood sound speed).
+/// The two-shock Riemann dissipation's impedance W_L W_R / (W_L + W_R) at a face with velocity
+/// jump du = u_R - u_L, W = z + kShockImpedanceSlope rho |du| of each side (z = rho c, the mixture's
+/// acoustic impedance, rho its density); 0 in expansion (du >= 0) or where a side has no impedance.
+[[nodiscard]] double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du);
+/// The Riemann dissipation's explicit rate on this rank: max over owned cells of
+/// sum_d (Z_lo + Z_hi) / (rho dx_d), Z the riemannImpedance of the cell's two faces normal to d and
+/// rho its mixture density (the term is a diffusion of velocity with nu = Z dx / rho at faces in
+/// compression; forward Euler is stable for dt <= 1 / rate). `cell` gets the stored-box index of
+/// the cell that sets it. Needs mass, velocity, theta, specific volume and kappa in the ghosts.
+[[nodiscard]] double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
+                                            std::int64_t* cell);
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0,
                           bool riemann = false);
 

@@ -7,13 +7,14 @@
 #include <cmath>
 
 #include "../../verification/ice/ice_test_scenes.h"
+#include "ice/ice_constants.h"
 #include "test_comm.h"
 
 using namespace mpmice;
 
 namespace {
 // A periodic 8 x 8 box of gas at rho = 1, p = 1e5, with a checkerboard u_x = U (-1)^(i+j).
-core::Scene checkerboardBox(double mu, double dy = 0.1) {
+core::Scene checkerboardBox(double mu, double dy = 0.1, const char* facePressure = "average") {
   core::Scene s;
   s.name = "checkerboard";
   s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, dy, 1}, {8, 8, 1});
@@ -22,9 +23,9 @@ core::Scene checkerboardBox(double mu, double dy = 0.1) {
   s.materials = {test::idealGas("gas")};
   s.materials[0].viscosity = mu;
   s.geometry = {test::region("gas", test::box({0, 0, 0}, {1, 1, 1}), {{"gas", 1.0}}, 1e5, 1.0)};
-  // The viscous bound alone: the Riemann face pressure's dissipation at compressive faces adds to
-  // the viscous diffusion of the checkerboard (its bound is not in the step; docs/ice.md "Shocks").
-  s.ice.face_pressure = "average";
+  // "average": the viscous bound alone (the Riemann face pressure's dissipation at compressive
+  // faces adds its own rate; the tests of the default below).
+  s.ice.face_pressure = facePressure;
   return s;
 }
 
@@ -85,16 +86,55 @@ TEST(IceTimeStep, UnchangedWithoutViscosityOrWhenTheAcousticBoundIsSmaller) {
   EXPECT_EQ(weak.stableTimeStep(), acoustic);
 }
 
+// With the default face pressure (riemann): at the step 1 / (2 nu sum_d dx_d^-2 + R) the
+// checkerboard's factor per step is -1 (viscosity and the Riemann dissipation together).
 TEST(IceTimeStep, CheckerboardKeepsItsAmplitudeAtTheViscousStepAndGrowsBeyond) {
-  ice::IceSolver sol(checkerboardBox(100.0), test::comm());
+  ice::IceSolver sol(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
   setCheckerboard(sol, 1.0);
   for (int n = 0; n < 50; ++n) sol.step();
   // At the bound the checkerboard's factor per step is 1 - 8 nu dt / dx^2 = -1 (kept, not grown).
   EXPECT_LE(maxSpeed(sol), 1.0 + 1e-9);
   EXPECT_GT(maxSpeed(sol), 0.5);
-  ice::IceSolver over(checkerboardBox(100.0), test::comm());
+  ice::IceSolver over(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
   setCheckerboard(over, 1.0);
   const double dt = 1.2 * over.stableTimeStep();  // factor 1 - 2.4 = -1.4 per step
   for (int n = 0; n < 20; ++n) stepWith(over, dt);
   EXPECT_GT(maxSpeed(over), 100.0);
+}
+
+// The default face pressure (riemann): its dissipation -Z du at the faces in compression is an
+// explicit diffusion of velocity; the step is 1 / (2 nu sum_d dx_d^-2 + R), R = max over cells of
+// sum_d (Z_lo + Z_hi) / (rho dx_d). In the checkerboard u_x = +-U each cell has one face in
+// compression in x (none in y: u_y = 0), Z = W / 2, W = rho (c + Gamma |du|), |du| = 2 U.
+double riemannRate(const ice::IceSolver& sol, double U) {
+  const auto& m = sol.state().mat[0];
+  const double c = std::sqrt(m.spvol(3, 3, 0) / m.kappa(3, 3, 0)), rho = 1.0 / m.spvol(3, 3, 0);
+  const double W = rho * (c + ice::kShockImpedanceSlope * 2.0 * U);
+  return (W / 2) / (rho * 0.1);
+}
+
+TEST(IceTimeStep, RiemannFacePressureRateAddsToTheViscousOne) {
+  ice::IceSolver sol(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
+  setCheckerboard(sol, 1.0);
+  const double R = riemannRate(sol, 1.0), visc = 2 * 100.0 * 2 / (0.1 * 0.1);
+  EXPECT_NEAR(sol.stableTimeStep(), 1.0 / (visc + R), 1e-9 / (visc + R));
+  EXPECT_NE(sol.stableTimeStepLimit().find("viscous + Riemann face-pressure"), std::string::npos)
+      << sol.stableTimeStepLimit();
+  // Inviscid at U = 5000 m/s and CFL 1 (c = 374 m/s): R = (c + 2.4 U) / (2 dx) is above the
+  // convective-acoustic rate sum_d (|u_d| + c) / dx_d, so the Riemann bound sets the step and the
+  // limit (printed in the collapse error) names it.
+  core::Scene s = checkerboardBox(0.0, 0.1, "riemann");
+  s.time.cfl = 1.0;
+  ice::IceSolver inv(s, test::comm());
+  setCheckerboard(inv, 5000.0);
+  const double R3 = riemannRate(inv, 5000.0);
+  EXPECT_NEAR(inv.stableTimeStep(), 1.0 / R3, 1e-9 / R3);
+  EXPECT_NE(inv.stableTimeStepLimit().find("the ICE Riemann face-pressure bound 1 / R"), std::string::npos)
+      << inv.stableTimeStepLimit();
+  // With the average face pressure the same state takes the convective-acoustic step (larger).
+  core::Scene a = s;
+  a.ice.face_pressure = "average";
+  ice::IceSolver avg(a, test::comm());
+  setCheckerboard(avg, 5000.0);
+  EXPECT_GT(avg.stableTimeStep(), 1.05 / R3);
 }

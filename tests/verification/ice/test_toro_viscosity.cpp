@@ -38,7 +38,10 @@ Result run(const Toro& c, int n) {
   core::Scene sc = test::shockTube(n, c.L, c.R, c.x0, c.t);
   sc.ice.shock_viscosity_linear = 1.0;
   sc.ice.shock_viscosity_quadratic = 2.0;
-  sc.ice.face_pressure = "average";  // the viscosity alone, as measured (docs/ice.md)
+  // The viscosity alone, as measured (docs/ice.md). Stable with the default (riemann) too since its
+  // bound is in the step, but both dissipations together smear more than the L1 bounds below allow
+  // (test 4 at 200 cells 0.429 > 0.39, test 5 0.0522 > 0.05; overshoots then 0.0-0.3 %).
+  sc.ice.face_pressure = "average";
   ice::IceSolver s(sc, test::comm());
   test::runToEnd(s, c.t);
   const test::ExactRiemann ex(c.L, c.R);
