@@ -10,10 +10,16 @@ void QrFactorization::rotate(int i, int k, double c, double s, int from) {
     r_(i, j) = c * a + s * b;
     r_(k, j) = -s * a + c * b;
   }
-  const Eigen::VectorXd qi = q_[static_cast<std::size_t>(i)];
-  Eigen::VectorXd& qk = q_[static_cast<std::size_t>(k)];
-  q_[static_cast<std::size_t>(i)] = c * qi + s * qk;
-  qk = -s * qi + c * qk;
+  // In place, element by element: no temporary column (for a long iterate a fresh page-mapped
+  // allocation per rotation), the same arithmetic.
+  double* qi = q_[static_cast<std::size_t>(i)].data();
+  double* qk = q_[static_cast<std::size_t>(k)].data();
+  const Eigen::Index n = q_[static_cast<std::size_t>(i)].size();
+  for (Eigen::Index e = 0; e < n; ++e) {
+    const double a = qi[e], b = qk[e];
+    qi[e] = c * a + s * b;
+    qk[e] = -s * a + c * b;
+  }
 }
 
 void QrFactorization::pushFront(const Eigen::VectorXd& column) {

@@ -31,7 +31,7 @@ class ConstitutiveModel {
   [[nodiscard]] virtual double waveSpeed(double rho) const = 0;
   /// The CFL signal speed of particles [begin, end): max of waveSpeed(m / V) + |v| (the first `dim`
   /// velocity components), 0 if the range is empty; `arg` the first particle reaching it (end if
-  /// none). One virtual call per material: models implement it with maxSignalSpeedOver().
+  /// none). One virtual call per material: ElasticWaveModel implements it with maxSignalSpeedOver().
   [[nodiscard]] virtual double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
                                               std::size_t& arg) const = 0;
 };
@@ -61,6 +61,22 @@ struct ElasticConstants {
   /// The P-wave speed sqrt((K + 4 G / 3) / rho).
   [[nodiscard]] double pWaveSpeed(double rho) const { return std::sqrt((K + 4.0 * G / 3.0) / rho); }
   static ElasticConstants fromSpec(const core::ModelSpec& spec, const std::string& what);
+};
+
+/// A model whose CFL wave speed is the P-wave speed of its elastic constants: waveSpeed and
+/// maxSignalSpeed (the loop with the speed inlined) written once for every such model.
+class ElasticWaveModel : public ConstitutiveModel {
+ public:
+  explicit ElasticWaveModel(const ElasticConstants& c) : c_(c) {}
+  [[nodiscard]] double waveSpeed(double rho) const final { return c_.pWaveSpeed(rho); }
+  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                      std::size_t& arg) const final {
+    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
+  }
+  [[nodiscard]] const ElasticConstants& constants() const { return c_; }
+
+ protected:
+  ElasticConstants c_;
 };
 
 /// A parameter of a ModelSpec; missing -> std::invalid_argument naming model and key.

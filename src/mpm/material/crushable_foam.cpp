@@ -9,7 +9,7 @@
 
 namespace mpmice::mpm {
 
-CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f) : c_(c), f_(f) {
+CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f) : ElasticWaveModel(c), f_(f) {
   if (!(f_.plateau > 0)) throw std::invalid_argument("crushable_foam: plateau_stress must be > 0");
   if (!(f_.densification > 0)) throw std::invalid_argument("crushable_foam: densification_strain must be > 0");
   if (!(f_.plasticPoisson > -1.0 && f_.plasticPoisson < 0.5))

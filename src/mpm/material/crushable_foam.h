@@ -29,23 +29,17 @@ struct CrushableFoamParams {
   double beta = 1;
 };
 
-class CrushableFoam final : public ConstitutiveModel {
+class CrushableFoam final : public ElasticWaveModel {
  public:
   CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f);
   [[nodiscard]] const char* name() const override { return "crushable_foam"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
-  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
-                                      std::size_t& arg) const override {
-    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
-  }
   /// Flow stress Y at eps_hat (< eps_D).
   [[nodiscard]] double flowStress(double epsHat) const;
   /// The yield surface's shape factor alpha.
   [[nodiscard]] double alpha() const { return alpha_; }
 
  private:
-  ElasticConstants c_;
   CrushableFoamParams f_;
   double alpha_ = 0, shape_ = 1;  // shape_ = 1 + (alpha/3)^2
 };

@@ -12,7 +12,7 @@ namespace mpmice::mpm {
 J2Plasticity::J2Plasticity(const ElasticConstants& c, double yieldStress, double hardening,
                            double failureStrain, std::vector<double> tableStrain,
                            std::vector<double> tableStress)
-    : c_(c), sy0_(yieldStress), H_(hardening), failure_(failureStrain),
+    : ElasticWaveModel(c), sy0_(yieldStress), H_(hardening), failure_(failureStrain),
       te_(std::move(tableStrain)), ts_(std::move(tableStress)) {
   if (te_.size() != ts_.size())
     throw std::invalid_argument("j2_plasticity: tables plastic_strain and stress differ in length (" +

@@ -18,7 +18,7 @@
 
 namespace mpmice::mpm {
 
-class J2Plasticity final : public ConstitutiveModel {
+class J2Plasticity final : public ElasticWaveModel {
  public:
   J2Plasticity(const ElasticConstants& c, double yieldStress, double hardening,
                double failureStrain, std::vector<double> tableStrain = {},
@@ -27,16 +27,10 @@ class J2Plasticity final : public ConstitutiveModel {
   /// Cowper-Symonds scaling of the flow stress (C [1/s] > 0, p > 0).
   void setRateDependence(double c, double p);
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
-  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
-                                      std::size_t& arg) const override {
-    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
-  }
   /// Yield stress and its slope at equivalent plastic strain e, times the rate factor.
   void yield(double e, double& sy, double& slope, double rateFactor = 1.0) const;
 
  private:
-  ElasticConstants c_;
   double sy0_, H_, failure_;
   std::vector<double> te_, ts_;
   double rateC_ = 0, rateP_ = 1;  // Cowper-Symonds; C = 0: rate-independent

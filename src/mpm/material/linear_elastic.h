@@ -9,20 +9,11 @@
 
 namespace mpmice::mpm {
 
-class LinearElastic final : public ConstitutiveModel {
+class LinearElastic final : public ElasticWaveModel {
  public:
-  explicit LinearElastic(const ElasticConstants& c) : c_(c) {}
+  explicit LinearElastic(const ElasticConstants& c) : ElasticWaveModel(c) {}
   [[nodiscard]] const char* name() const override { return "linear_elastic"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
-  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
-  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
-                                      std::size_t& arg) const override {
-    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
-  }
-  [[nodiscard]] const ElasticConstants& constants() const { return c_; }
-
- private:
-  ElasticConstants c_;
 };
 
 }  // namespace mpmice::mpm

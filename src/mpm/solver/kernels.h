@@ -30,10 +30,15 @@ void dispatch(ShapeKind k, int dim, F&& f) {
 }
 
 /// The linear hat's cached stencil keeps its fraction f per direction (weights 1 - f and f,
-/// gradients -1/dx and 1/dx: LinearShape::eval's operations); the other shapes keep weights and
-/// gradients.
+/// gradients -1/dx and 1/dx: LinearShape::eval's operations); GIMP keeps weights and gradients.
 template <class Shape>
 inline constexpr bool kCompactRecord = std::is_same_v<Shape, LinearShape>;
+/// Shapes whose weights depend on the grid coordinate xi alone (the B-splines): their cache
+/// record is xi per direction, and the weights and gradients are evaluated from it on use, by the
+/// same function from the same value, so bit for bit what was stored before (memory: Dim doubles
+/// per particle instead of 2 Dim N; 2D bspline2 16 B instead of 96 B).
+template <class Shape>
+inline constexpr bool kCoordinateRecord = std::is_same_v<Shape, BSpline2Shape> || std::is_same_v<Shape, BSpline3Shape>;
 
 /// The tensor-product loop over a stencil with first node o0 and per-direction weights w and
 /// gradients dw: f(node offset, weight, grad x, grad y, grad z). In 1D and 2D the missing
@@ -71,11 +76,12 @@ struct Stencil {
   int base[3] = {0, 0, 0};
   double w[3][N] = {};
   double dw[3][N] = {};
+  double xi[3] = {0, 0, 0};  // grid coordinate per direction
 
   inline void compute(const ParticleSet& p, std::size_t i, const GridGeom& g) {
     for (int d = 0; d < Dim; ++d) {
-      const double xi = (p.x[d][i] - g.origin[d]) * g.invDx[d];
-      Shape::eval(xi, p.halfSize[d][i] * g.invDx[d], base[d], w[d], dw[d]);
+      xi[d] = (p.x[d][i] - g.origin[d]) * g.invDx[d];
+      Shape::eval(xi[d], p.halfSize[d][i] * g.invDx[d], base[d], w[d], dw[d]);
       for (int a = 0; a < N; ++a) dw[d][a] *= g.invDx[d];
     }
     for (int d = Dim; d < 3; ++d) {
@@ -96,6 +102,8 @@ struct Stencil {
     offset = g.index(base[0], base[1], base[2]);
     if constexpr (kCompactRecord<Shape>) {
       for (int d = 0; d < Dim; ++d) rec[d] = w[d][1];
+    } else if constexpr (kCoordinateRecord<Shape>) {
+      for (int d = 0; d < Dim; ++d) rec[d] = xi[d];
     } else {
       for (int d = 0; d < Dim; ++d)
         for (int a = 0; a < N; ++a) {
@@ -115,7 +123,7 @@ struct Stencil {
 template <class Shape, int Dim>
 struct StencilCache {
   static constexpr int N = Shape::kNodes;
-  static constexpr int kRecord = kCompactRecord<Shape> ? Dim : 2 * Dim * N;
+  static constexpr int kRecord = kCompactRecord<Shape> || kCoordinateRecord<Shape> ? Dim : 2 * Dim * N;
   std::int64_t* offset;
   double* rec;
 
@@ -130,6 +138,12 @@ struct StencilCache {
         w[d][1] = r[d];
         dw[d][0] = -1.0 * g.invDx[d];
         dw[d][1] = 1.0 * g.invDx[d];
+      }
+    } else if constexpr (kCoordinateRecord<Shape>) {
+      for (int d = 0; d < Dim; ++d) {
+        int base = 0;
+        Shape::eval(r[d], 0.0, base, w[d], dw[d]);
+        for (int a = 0; a < N; ++a) dw[d][a] *= g.invDx[d];
       }
     } else {
       for (int d = 0; d < Dim; ++d)

@@ -1,5 +1,6 @@
 #include "couplings/volume/schedule/implicit_schedule.h"
 
+#include <algorithm>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,11 @@ namespace {
 bool isFluidOutput(const std::string& f) { return f == "pressure_force" || f == "pressure" || f == "exchange_momentum"; }
 
 std::span<double> all(core::Field& f) { return {f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())}; }
+/// A vector field's first `dim` components (contiguous: the field stores component by
+/// component); the rest stay zero below 3D, so leaving them out of the iterate changes no sum.
+std::span<double> vec(core::Field& f, int dim) {
+  return {f.data(), static_cast<std::size_t>(f.npts() * std::min(f.ncomp(), dim))};
+}
 }  // namespace
 
 std::vector<core::ConvergenceSpec> volumeMeasures(const core::CouplingSpec& spec) {
@@ -31,17 +37,18 @@ ImplicitSchedule::ImplicitSchedule(const core::CouplingSpec& spec, const core::C
 
 std::vector<DataView> ImplicitSchedule::iterate(SolidSide& solid) const {
   std::vector<DataView> v;
+  const int dim = solid.solver().decomposition().mesh().dim();
   for (auto& s : solid.fields()) {
     if (core::isParallel(kind_)) {
       v.push_back({"solid_mass", all(s.mass)});
-      v.push_back({"solid_velocity", all(s.velocity)});
+      v.push_back({"solid_velocity", vec(s.velocity, dim)});
       v.push_back({"solid_temperature", all(s.temperature)});
       v.push_back({"solid_specific_volume", all(s.specificVolume)});
-      v.push_back({"lagrangian_momentum", all(s.lagrangianMomentum)});
+      v.push_back({"lagrangian_momentum", vec(s.lagrangianMomentum, dim)});
     }
-    v.push_back({"pressure_force", all(s.pressureForce)});
+    v.push_back({"pressure_force", vec(s.pressureForce, dim)});
     v.push_back({"pressure", all(s.pressure)});
-    v.push_back({"exchange_momentum", all(s.exchangeMomentum)});
+    v.push_back({"exchange_momentum", vec(s.exchangeMomentum, dim)});
     v.push_back({"exchange_energy", all(s.exchangeEnergy)});
   }
   return v;
