@@ -256,8 +256,10 @@ void Foam::functionObjects::mpmiceAdapter::startCoupling()
              "(dynamicMotionSolverFvMesh) and 0/pointDisplacement with a fixedValue on patch " + patchName_);
     }
     endTime_ = time_.endTime().value();
+    // The start is the clock's value (a restart's time directory holds it to the last digit;
+    // controlDict's startTime only names that directory).
     if (mpmice_bridge_set_patch(bridge_, Cf.size(), fc.cdata(), pts.size(), pc.cdata(), depth,
-                                time_.deltaTValue(), time_.startTime().value(), endTime_))
+                                time_.deltaTValue(), time_.value(), endTime_))
     {
         fail(mpmice_bridge_error(bridge_));
     }
@@ -309,9 +311,11 @@ void Foam::functionObjects::mpmiceAdapter::store(Saved<FieldType>& s)
         s.names[k] = names[i];
         s.indices[k] = f.timeIndex();
         s.fields.set(k, new FieldType(names[i] + "_mpmiceSaved", f));
+        s.fields[k].writeOpt() = IOobject::NO_WRITE;  // never in a time directory
         if (f.nOldTimes())
         {
             s.old.set(k, new FieldType(names[i] + "_mpmiceSaved0", f.oldTime()));
+            s.old[k].writeOpt() = IOobject::NO_WRITE;
         }
         ++k;
     }
@@ -384,6 +388,16 @@ bool Foam::functionObjects::mpmiceAdapter::execute()
         else if (implicit_)
         {
             checkpoint();
+        }
+        if (mpmice_bridge_write_due(bridge_))
+        {
+            // The solid writes a restart checkpoint at this window: the time directory of the
+            // same time, with the displacements just received as pointDisplacement's patch
+            // value (what the next window moves the mesh by), so `coupler run --restart`
+            // resumes the fluid from here (startFrom startTime) as if it had not stopped.
+            Info<< type() << ": restart state written at t = " << time_.timeName()
+                << " (the solid's checkpoint)" << endl;
+            const_cast<Time&>(time_).writeNow();
         }
     }
     if (!bridge_ && (time_.writeTime() || time_.value() > time_.endTime().value() - 0.5*time_.deltaTValue()))

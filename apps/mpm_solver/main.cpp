@@ -66,10 +66,7 @@ int main(int argc, char** argv) {
     if (participant.coupled()) {
       if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
         try {
-          if (!line.restart.empty())
-            throw std::invalid_argument("--restart: the surface coupling with OpenFOAM (coupling.fluid: openfoam) "
-                                        "does not resume from checkpoints yet");
-          return coupler::runSurfaceSolidParticipant(participant, scene, std::cout);
+          return coupler::runSurfaceSolidParticipant(participant, scene, std::cout, line.restart);
         } catch (const core::HealthError& ex) {  // only this side knows: end the launch
           if (ex.reporter()) core::writeErrorLine("mpm_solver", ex.what());
           std::fflush(stderr);

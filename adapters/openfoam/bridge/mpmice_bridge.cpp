@@ -24,6 +24,7 @@ struct mpmice_bridge {
   std::optional<core::Scene> scene;
   std::optional<coupler::Participant> participant;
   int faces = 0, points = 0;
+  bool writeDue = false;  // the last accepted window's reply asked for the fluid's restart state
 };
 
 namespace {
@@ -110,19 +111,23 @@ int mpmice_bridge_exchange(mpmice_bridge* b, double t_end, double dt, int last, 
   return guarded(b, [&] {
     *action = 0;
     *iterations = 1;
+    b->writeDue = false;
     if (!b->participant->coupled()) return;
     const auto& p = *b->participant;
     coupler::sendVector(p, {t_end, dt, last ? 1.0 : 0.0}, "window header");
     coupler::sendVector(p, std::vector<double>(face_forces, face_forces + 3 * b->faces), "patch face forces");
     const std::vector<double> r = coupler::receiveVector(p, "window reply");
     const std::vector<double> d = coupler::receiveVector(p, "patch displacements");
-    if (r.size() != 2 || d.size() != 3u * static_cast<std::size_t>(b->points))
+    if (r.size() != 3 || d.size() != 3u * static_cast<std::size_t>(b->points))
       throw std::runtime_error("coupler: malformed reply from '" + p.peerName() + "'");
     *action = static_cast<int>(r[0]);
     *iterations = static_cast<int>(r[1]);
+    b->writeDue = r[2] != 0.0;
     std::memcpy(point_displacements, d.data(), d.size() * sizeof(double));
   });
 }
+
+int mpmice_bridge_write_due(const mpmice_bridge* b) { return b && b->writeDue ? 1 : 0; }
 
 void mpmice_bridge_finish(mpmice_bridge* b) {
   if (!b) return;

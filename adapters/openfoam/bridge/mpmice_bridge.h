@@ -33,8 +33,9 @@ mpmice_bridge* mpmice_bridge_start(const char* scene_file);
 const char* mpmice_bridge_error(const mpmice_bridge* b);
 int mpmice_bridge_info_get(const mpmice_bridge* b, mpmice_bridge_info* info);
 
-/* The patch at t = 0: face centres (3 per face), points (3 per point, in the order displacements
- * come back), depth of a 2D mesh (1 in 3D), the fluid's time step (the coupling window), start
+/* The patch at the start: face centres (3 per face), points (3 per point, in the order
+ * displacements come back), depth of a 2D mesh (1 in 3D), the fluid's time step (the coupling
+ * window), start (0, or a restart's time; the solid keeps the geometry of t = 0 in its checkpoint)
  * and end time. */
 int mpmice_bridge_set_patch(mpmice_bridge* b, int n_faces, const double* face_centres, int n_points,
                             const double* points, double depth, double dt, double start, double end);
@@ -45,6 +46,12 @@ int mpmice_bridge_set_patch(mpmice_bridge* b, int n_faces, const double* face_ce
  * last: 1 on the fluid's last window. */
 int mpmice_bridge_exchange(mpmice_bridge* b, double t_end, double dt, int last, const double* face_forces,
                            double* point_displacements, int* action, int* iterations);
+
+/* 1 when the solid writes a restart checkpoint at the window the last mpmice_bridge_exchange
+ * accepted (output.checkpoint_interval): the fluid writes its own state at that time too (OpenFOAM:
+ * its time directory, after the new displacements are set), so `coupler run --restart` resumes
+ * both from one time. 0 otherwise (and after a repeated window). */
+int mpmice_bridge_write_due(const mpmice_bridge* b);
 
 /* Leaves the launch (finalises MPI if the bridge initialised it) and frees the handle. */
 void mpmice_bridge_finish(mpmice_bridge* b);

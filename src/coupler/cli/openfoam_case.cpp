@@ -1,12 +1,18 @@
 #include "coupler/cli/openfoam_case.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
+#include "core/io/checkpoint.h"
+#include "core/io/h5_file.h"
 #include "core/io/text_file.h"
 #include "coupler/cli/process.h"
 #include "coupler/cli/program_locator.h"
@@ -51,6 +57,43 @@ fs::path normalised(const fs::path& p) {
 
 constexpr const char* kCopyMarker = ".mpmice_case_copy";
 
+/// controlDict text with the top-level entry `key` set to `value` (appended when absent).
+std::string withEntry(const std::string& text, const std::string& key, const std::string& value) {
+  const std::regex entry("(^|\n)" + key + R"(\s+[^;]*;)");
+  if (std::regex_search(text, entry)) return std::regex_replace(text, entry, "$1" + key + "  " + value + ";");
+  return text + "\n" + key + "  " + value + ";\n";
+}
+
+std::string exact(double v) {
+  std::ostringstream e;
+  e.precision(17);
+  e << v;
+  return e.str();
+}
+
+/// The controlDict entries `coupler run` owns: the scene's end time (two-way: both sides run to
+/// it; one-way: the fluid runs to it, then the solid relaxes under the last forces for as long
+/// again) and, with checkpoints, 17 significant digits (a double read back exactly: the time
+/// directories a restart starts from hold the fields as they were).
+std::string withRunEntries(std::string text, const core::Scene& scene) {
+  text = withEntry(text, "endTime", exact(scene.time.end));
+  if (scene.output.checkpoint_interval > 0) text = withEntry(text, "writePrecision", "17");
+  return text;
+}
+
+/// Whether `dst` is a case copy made by coupler run (marker file, or its adapter entry).
+bool isOurCopy(const fs::path& dst) {
+  return fs::exists(dst / kCopyMarker) ||
+         core::readTextFile(dst / "system" / "controlDict").find("added by `coupler run`") != std::string::npos;
+}
+
+/// The case copy of the scene: <output.directory>/<case folder name>; its source case (absolute).
+std::pair<fs::path, fs::path> caseFolders(const core::Scene& scene, const std::string& sceneFile) {
+  fs::path src = scene.coupling.interface.openfoam_case;
+  if (src.is_relative()) src = fs::absolute(fs::path(sceneFile)).parent_path() / src;
+  return {src, fs::absolute(fs::path(scene.output.directory) / src.filename())};
+}
+
 }  // namespace
 
 void copyCaseFresh(const fs::path& source, const fs::path& target) {
@@ -62,9 +105,7 @@ void copyCaseFresh(const fs::path& source, const fs::path& target) {
                                 "; refusing to overwrite it: set output.directory to a folder of its own (e.g. output)");
   if (fs::exists(dst)) {
     // Only an earlier copy of `coupler run` (marker file, or its adapter entry) is replaced.
-    const bool ours = fs::exists(dst / kCopyMarker) ||
-                      core::readTextFile(dst / "system" / "controlDict").find("added by `coupler run`") != std::string::npos;
-    if (!ours)
+    if (!isOurCopy(dst))
       throw std::invalid_argument("coupler run: " + dst.string() +
                                   " exists and is not a case copy made by coupler run; refusing to delete it: move it "
                                   "away or set output.directory to another folder");
@@ -79,8 +120,7 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
                                 std::ostream& out) {
   const auto& iface = scene.coupling.interface;
   const std::string where = iface.where.str();
-  fs::path src = iface.openfoam_case;
-  if (src.is_relative()) src = fs::absolute(fs::path(sceneFile)).parent_path() / src;
+  const auto [src, dst] = caseFolders(scene, sceneFile);
   if (!fs::exists(src / "system" / "controlDict"))
     throw std::invalid_argument(where + ": coupling.interface.case: '" + iface.openfoam_case + "' (" + src.string() +
                                 ") is not an OpenFOAM case: no system/controlDict there");
@@ -89,19 +129,10 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
     throw std::invalid_argument("coupler run: the OpenFOAM adapter " + lib +
                                 " is not built or installed (needs OpenFOAM's headers: scripts/openfoam_headers.sh, then cmake; "
                                 "--bin-dir names where to look)");
-  const fs::path dst = fs::absolute(fs::path(scene.output.directory) / src.filename());
   copyCaseFresh(src, dst);
   const fs::path cd = dst / "system" / "controlDict";
-  std::string text = withFunctionObject(core::readTextFile(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
-  {
-    // One end time: the scene's (two-way: both sides run to it; one-way: the fluid runs to it,
-    // then the solid relaxes under the last forces for as long again).
-    std::ostringstream e;
-    e.precision(17);
-    e << "$1endTime         " << scene.time.end << ";";
-    text = std::regex_replace(text, std::regex(R"((^|\n)endTime\s+[^;]*;)"), e.str());
-  }
-  std::ofstream(cd) << text;
+  const std::string text = withFunctionObject(core::readTextFile(cd), adapterEntry(lib, fs::absolute(sceneFile).string()));
+  std::ofstream(cd) << withRunEntries(text, scene);
   if (!fs::exists(dst / "constant" / "polyMesh" / "points") && !fs::exists(dst / "constant" / "polyMesh" / "points.gz")) {
     out << "coupler: blockMesh -case " << dst.string() << "\n" << std::flush;
     const int status = runToFile({"blockMesh", "-case", dst.string()}, (dst / "log.blockMesh").string(),
@@ -112,6 +143,53 @@ std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sce
       throw std::runtime_error("coupler run: blockMesh failed for " + dst.string() + ":\n" + log);
     }
   }
+  return dst.string();
+}
+
+std::string resumeOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& restart,
+                               std::ostream& out) {
+  const std::string checkpoint = core::resolveCheckpoint(restart, scene.name);
+  const double t = core::H5File::open(checkpoint).root().readAttributeDouble("time").at(0);
+  const fs::path dst = caseFolders(scene, sceneFile).second;
+  const fs::path cd = dst / "system" / "controlDict";
+  if (!fs::exists(cd))
+    throw std::invalid_argument("coupler run --restart: the checkpoint " + checkpoint + " (t = " + exact(t) +
+                                " s) resumes the OpenFOAM side from the case copy of the run that wrote it, " +
+                                dst.string() + ", which does not exist");
+  if (!isOurCopy(dst))
+    throw std::invalid_argument("coupler run --restart: " + dst.string() +
+                                " is not a case copy made by coupler run; refusing to run in it");
+  // The time directory of the checkpoint's time (its name has controlDict's timePrecision digits).
+  fs::path match;
+  double best = 0;
+  std::string times;
+  for (const auto& e : fs::directory_iterator(dst)) {
+    if (!e.is_directory()) continue;
+    const std::string name = e.path().filename().string();
+    char* end = nullptr;
+    const double v = std::strtod(name.c_str(), &end);
+    if (name.empty() || *end != '\0') continue;
+    times += (times.empty() ? "" : " ") + name;
+    const double d = std::abs(v - t);
+    if (d <= 1e-6 * std::max(std::abs(t), 1e-300) && (match.empty() || d < best)) {
+      match = e.path();
+      best = d;
+    }
+  }
+  if (match.empty())
+    throw std::invalid_argument("coupler run --restart: the checkpoint " + checkpoint + " is at t = " + exact(t) +
+                                " s but the OpenFOAM case copy " + dst.string() +
+                                " has no time directory of that time (it has: " + (times.empty() ? "none" : times) +
+                                "); the fluid cannot resume there: choose a checkpoint whose time directory exists");
+  // startTime: the checkpoint's time to the last digit. OpenFOAM finds the directory by the
+  // time's name (timePrecision digits) and, the names agreeing, keeps this value as its clock
+  // (not the directory's uniform/time value), so the clock goes on as in the uninterrupted run.
+  std::string text = withEntry(core::readTextFile(cd), "startFrom", "startTime");
+  text = withEntry(text, "startTime", exact(t));
+  std::ofstream(cd) << withRunEntries(text, scene);
+  out << "coupler: " << scene.coupling.interface.openfoam_solver << " resumes from " << match.string() << " (the time of "
+      << checkpoint << ")\n"
+      << std::flush;
   return dst.string();
 }
 

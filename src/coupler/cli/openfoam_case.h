@@ -25,6 +25,15 @@ std::string withFunctionObject(const std::string& controlDict, const std::string
 std::string prepareOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                                 std::ostream& out);  // binDir: --bin-dir (cli/program_locator.h)
 
+/// `coupler run --restart PATH`: the case copy of the run that wrote the checkpoint PATH means
+/// (the scene's checkpoint there, core::resolveCheckpoint) is resumed in place: its controlDict
+/// starts from the time directory of the checkpoint's time (startFrom startTime) and ends at the
+/// scene's time.end; nothing is copied or deleted. Returns the copy's path. Throws
+/// std::invalid_argument naming the checkpoint and the case copy when the copy or its time
+/// directory of that time is missing.
+std::string resumeOpenFoamCase(const core::Scene& scene, const std::string& sceneFile, const std::string& restart,
+                               std::ostream& out);
+
 /// Copies the case folder `source` to `target`, replacing an earlier copy made by coupler run.
 /// Throws std::invalid_argument, deleting nothing, when target is, contains or lies inside source,
 /// or when target exists and is not such a copy.

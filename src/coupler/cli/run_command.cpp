@@ -45,20 +45,10 @@ std::string LaunchPlan::describeWorldRank(int worldRank) const {
   return {};
 }
 
-namespace {
-/// --restart exists for mpm_solver + ice_solver only (throws for the surface coupling).
-void checkRestartSupported(const core::Scene& scene, const std::string& restart) {
-  if (!restart.empty() && scene.coupling.fluid == core::FluidSolver::OpenFoam)
-    throw std::invalid_argument("coupler run: --restart is not available for coupling.fluid: openfoam yet "
-                                "(mpm_solver + ice_solver scenes only)");
-}
-}  // namespace
-
 LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile, const std::string& binDir,
                          const std::string& mpirun, int mpmRanks, int iceRanks, const std::string& fluidCase,
                          const std::string& restart) {
   if (mpmRanks < 1 || iceRanks < 1) throw std::invalid_argument("coupler run: rank counts must be >= 1");
-  checkRestartSupported(scene, restart);
   LaunchPlan plan;
   if (scene.coupling.fluid == core::FluidSolver::OpenFoam) {
     // Serial OpenFOAM: v1912's Pstream would take MPI_COMM_WORLD (adapters/openfoam/README.md).
@@ -68,8 +58,11 @@ LaunchPlan composeLaunch(const core::Scene& scene, const std::string& sceneFile,
     plan.participants = {"mpm", "openfoam"};
     plan.ranks = {mpmRanks, 1};
     plan.executables = {mpm};
-    plan.argv = {mpirun, "-x", "WM_PROJECT_DIR", "-np", std::to_string(mpmRanks), mpm, sceneFile,
-                 ":", "-np", "1", solver, "-case", fluidCase};
+    // A restart: mpm_solver resumes its checkpoint; the solver its case copy's time directory of
+    // the same time (resumeOpenFoamCase set the copy's controlDict to start there).
+    plan.argv = {mpirun, "-x", "WM_PROJECT_DIR", "-np", std::to_string(mpmRanks), mpm};
+    if (!restart.empty()) plan.argv.insert(plan.argv.end(), {"--restart", restart});
+    plan.argv.insert(plan.argv.end(), {sceneFile, ":", "-np", "1", solver, "-case", fluidCase});
     return plan;
   }
   // A scene of one kind of material needs one program (the other would have nothing to solve).
@@ -241,7 +234,9 @@ void describeRun(CLI::App& app, RunOptions& o) {
   app.add_option("--restart", o.restart,
                  "resume from a checkpoint (output.checkpoint_interval): an output directory (the latest "
                  "checkpoint there) or one program's checkpoint file; passed to both programs, each "
-                 "resumes from its own file of that step")
+                 "resumes from its own file of that step (coupling.fluid: openfoam: mpm_solver from its "
+                 "checkpoint, the OpenFOAM solver from the time directory of the same time in the run's "
+                 "case copy)")
       ->type_name("PATH");
   app.add_option("scene.yaml", o.sceneFile, "the scene file")->required();
   app.footer("Sample runs:\n"
@@ -279,7 +274,6 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     const core::Scene scene = core::loadScene(sceneFile);
     if (mpmRanks == 0) mpmRanks = scene.coupling.mpm_ranks;
     if (iceRanks == 0) iceRanks = scene.coupling.ice_ranks;
-    checkRestartSupported(scene, o.restart);  // before the lock and the OpenFOAM case
     // The output-directory lock, before anything is written (core/io/run_lock.h); the launch's
     // programs accept it as their coupler's.
     std::unique_ptr<core::RunLock> lock;
@@ -291,7 +285,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       }
     }
     std::string fluidCase;
-    if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun) fluidCase = prepareOpenFoamCase(scene, sceneFile, binDir, out);
+    if (scene.coupling.fluid == core::FluidSolver::OpenFoam && !dryRun)
+      fluidCase = o.restart.empty() ? prepareOpenFoamCase(scene, sceneFile, binDir, out)
+                                    : resumeOpenFoamCase(scene, sceneFile, o.restart, out);
     const LaunchPlan plan =
         composeLaunch(scene, sceneFile, binDir, locateLaunchHelper(ownDirectory()), mpmRanks, iceRanks, fluidCase, o.restart);
     for (std::size_t p = 0; p < plan.executables.size(); ++p)

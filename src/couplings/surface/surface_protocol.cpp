@@ -1,5 +1,6 @@
 #include "couplings/surface/surface_protocol.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -68,12 +69,19 @@ SurfaceSetup receiveSetup(const Participant& p) {
   return s;
 }
 
-void checkFluidTime(const SurfaceSetup& s, const core::Scene& scene) {
+void checkFluidTime(const SurfaceSetup& s, const core::Scene& scene, double start) {
   if (!(s.dt > 0))
     throw std::invalid_argument("the fluid's deltaT (system/controlDict) must be > 0; it is the coupling window");
-  if (std::abs(s.start) > 1e-12)
-    throw std::invalid_argument("the fluid case starts at t = " + std::to_string(s.start) +
-                                " (controlDict startTime); coupled runs start at 0");
+  if (std::abs(s.start - start) > 1e-12 * std::max(1.0, std::abs(start))) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "the fluid case starts at t = " << s.start << " (controlDict startTime); ";
+    if (start == 0.0)
+      os << "coupled runs start at 0";
+    else
+      os << "the solid resumes its checkpoint at t = " << start << " (`coupler run --restart` starts both there)";
+    throw std::invalid_argument(os.str());
+  }
   if (std::abs(s.end - scene.time.end) > 0.5 * s.dt) {
     std::ostringstream os;
     os << "time.end is " << scene.time.end << " s in the scene but the fluid case's controlDict endTime is " << s.end

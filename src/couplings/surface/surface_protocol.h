@@ -9,9 +9,11 @@
 /// Start:   handshake (scene hash, interface, schedule)
 ///          fluid -> solid  SurfaceSetup: sizes, depth, time window, the patch geometry
 /// Window:  fluid -> solid  WindowHeader {t_end, dt, last} + face forces (3 per face, N)
-///          solid -> fluid  WindowReply {action, iterations} + point displacements (3 per point, m)
+///          solid -> fluid  WindowReply {action, iterations, write} + point displacements (3 per point, m)
 /// action: advance (accept the window), repeat (implicit: the fluid restores its checkpoint and
-/// solves the window again with the new displacements).
+/// solves the window again with the new displacements). write: 1 when the solid writes a restart
+/// checkpoint at this accepted window (output.checkpoint_interval); the fluid then writes its
+/// state at the same time (OpenFOAM: its time directory, the new displacements in it).
 #include <string>
 #include <vector>
 
@@ -51,7 +53,8 @@ void sendSetup(const Participant& p, const SurfaceSetup& s);
 SurfaceSetup receiveSetup(const Participant& p);
 
 /// Checks what the solid must know about the fluid's time: throws std::invalid_argument naming
-/// the scene keys and the OpenFOAM controlDict entries that disagree.
-void checkFluidTime(const SurfaceSetup& s, const core::Scene& scene);
+/// the scene keys and the OpenFOAM controlDict entries that disagree. `start`: the time the solid
+/// starts from (0, or a restart's checkpoint time), which the fluid must start from too.
+void checkFluidTime(const SurfaceSetup& s, const core::Scene& scene, double start = 0.0);
 
 }  // namespace mpmice::coupler

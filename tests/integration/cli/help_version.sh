@@ -34,6 +34,7 @@ expect 0 "--dry-run" out -- "$c" run --help
 expect 0 "^usage: coupler check" out -- "$c" check --help
 expect 0 "--quiet" out -- "$c" check --help
 expect 0 "^coupler [0-9]" out -- "$c" run --version
+expect 0 "^coupler [0-9]" out -- "$c" check --version
 expect 2 "no command given" err -- "$c"
 st=$bin/study/study
 expect 0 "^usage: study" out -- "$st" --help

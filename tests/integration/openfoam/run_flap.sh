@@ -15,9 +15,8 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work"
 # instrumented bridge, so the launch runs with the sanitizer runtime preloaded (MPMICE_SANITIZER_PRELOAD).
 foam() { if [ -n "${MPMICE_SANITIZER_PRELOAD:-}" ]; then LD_PRELOAD="$MPMICE_SANITIZER_PRELOAD" "$@"; else "$@"; fi; }
 
-cp -r "$src/configs/flap/fluid-openfoam" case
-sed -i -e 's/^nFlap .*/nFlap 2;/' -e 's/^nHeight .*/nHeight 5;/' -e 's/^nFar .*/nFar 10;/' case/system/blockMeshDict
-sed -i 's/^writeInterval .*/writeInterval   1000;/' case/system/controlDict
+. "$src/tests/integration/openfoam/flap_case.sh"
+coarse_case "$src" case
 
 schedule=explicit_serial; extra=""; patch=flap; ifmode=two_way; damping=0
 case "$mode" in
@@ -28,14 +27,7 @@ case "$mode" in
   explicit|two_ranks) ;;
   *) echo "unknown mode $mode" >&2; exit 2 ;;
 esac
-sed -e 's/end: 5.0/end: 0.2/' -e 's/spacing: \[0.025, 0.025\]/spacing: [0.05, 0.05]/' \
-    -e "s/schedule: explicit_serial/schedule: $schedule/" -e "s#case: flap/fluid-openfoam#case: case#" \
-    -e "s/patch: flap/patch: $patch/" -e "s/mapping: rbf/mapping: rbf\n    mode: $ifmode/" \
-    -e "s/update: usl/update: usl\n  damping: $damping/" -e 's#directory: output/flap_openfoam#directory: out#' \
-    -e 's/timeout: 120/timeout: 60/' "$src/configs/flap_openfoam.yaml" > flap.yaml
-if [ -n "$extra" ]; then
-  awk -v extra="$extra" '{print} /schedule: implicit_serial/{print extra}' flap.yaml > f && mv f flap.yaml
-fi
+flap_scene "$src" "$schedule" "$patch" "$ifmode" "$damping" "$extra" > flap.yaml
 
 status=0
 foam "$bin/coupler/coupler" run flap.yaml --bin-dir "$bin" > log.txt 2>&1 || status=$?

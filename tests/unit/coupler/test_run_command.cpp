@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 #include "coupler/cli/program_locator.h"
 #include "coupler/launch/timed_wait.h"
 #include "coupler/cli/run_command.h"
+#include "core/io/h5_file.h"
 #include "core/scene/scene.h"
 
 using namespace mpmice;
@@ -133,15 +135,11 @@ TEST(CoupleRun, ComposesTheOpenFoamLaunchWithASerialFluid) {
   ASSERT_EQ(plan.executables.size(), 1u);
 }
 
-TEST(CoupleRun, RestartIsRefusedForTheOpenFoamCoupling) {
+TEST(CoupleRun, RestartResumesMpmSolverAndTheOpenFoamCaseCopy) {
   const auto s = flapScene("fluid");
-  try {
-    (void)coupler::composeLaunch(s, "flap.yaml", "/b", "/x/mpirun", 2, 1, "/o/fluid", "output");
-    ADD_FAILURE() << "--restart with OpenFOAM must be refused";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("--restart is not available for coupling.fluid: openfoam"), std::string::npos)
-        << e.what();
-  }
+  const auto plan = coupler::composeLaunch(s, "flap.yaml", "/b", "/x/mpirun", 2, 1, "/o/fluid", "output");
+  EXPECT_EQ(plan.commandLine(), "/x/mpirun -x WM_PROJECT_DIR -np 2 /b/mpm_solver/mpm_solver --restart output flap.yaml "
+                                ": -np 1 pisoFoam -case /o/fluid");
 }
 
 TEST(CoupleRun, AddsTheAdapterInsideTheFunctionsDictionary) {
@@ -315,4 +313,73 @@ TEST(CoupleRun, ABoundedRunReportsItsStatusItsMemoryAndItsTimeLimit) {
   // A limit that is not > 0 is refused.
   EXPECT_THROW((void)mpmice::coupler::runToFileWithin({"true"}, log.string(), 0), std::invalid_argument);
   std::filesystem::remove(log);
+}
+
+namespace {
+/// A run's output directory as a surface-coupled run with checkpoints leaves it: the case copy
+/// (marker, controlDict, time directories `times`) and the solid's checkpoint of step 5 at t.
+core::Scene resumableRun(const std::filesystem::path& root, const std::vector<std::string>& times, double t) {
+  namespace fs = std::filesystem;
+  fs::remove_all(root);
+  fs::create_directories(root / "out" / "fluid" / "system");
+  std::ofstream(root / "out" / "fluid" / ".mpmice_case_copy") << "copy\n";
+  std::ofstream(root / "out" / "fluid" / "system" / "controlDict")
+      << "startFrom       latestTime;\nstartTime       0;\nendTime         0.5;\nwritePrecision  8;\n";
+  for (const auto& name : times) fs::create_directories(root / "out" / "fluid" / name);
+  core::H5File::create((root / "out" / "flap_checkpoint_000005.h5").string()).root().writeAttribute("time", std::vector<double>{t});
+  return core::parseScene(R"(
+scene: flap
+mesh: {dim: 2, lower: [-0.5, 0], upper: [0.5, 1.2], cells: [20, 24]}
+time: {end: 0.8}
+materials:
+  - {name: flap, kind: solid, density: 3000, model: {type: neo_hookean, youngs_modulus: 4.0e6, poissons_ratio: 0.3}}
+geometry:
+  - {shape: {type: box, lo: [-0.05, 0], hi: [0.05, 1]}, material: flap}
+coupling:
+  schedule: explicit_serial
+  fluid: openfoam
+  interface: {solid: flap, patch: flap, case: fluid, solver: pimpleFoam}
+output: {directory: ")" + (root / "out").string() + R"(", checkpoint_interval: 0.05}
+)", (root / "flap.yaml").string());
+}
+}  // namespace
+
+TEST(CoupleRun, ARestartStartsTheCaseCopyFromTheCheckpointsTimeDirectory) {
+  const auto root = std::filesystem::temp_directory_path() / ("mpmice_of_resume_" + std::to_string(getpid()));
+  const auto s = resumableRun(root, {"0", "0.05", "0.1", "0.15"}, 0.1);
+  std::ostringstream out;
+  const std::string copy = coupler::resumeOpenFoamCase(s, (root / "flap.yaml").string(), (root / "out").string(), out);
+  EXPECT_EQ(copy, (root / "out" / "fluid").string());
+  const std::string cd = [&] {
+    std::ifstream in(root / "out" / "fluid" / "system" / "controlDict");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  EXPECT_NE(cd.find("startFrom  startTime;"), std::string::npos) << cd;
+  EXPECT_NE(cd.find("startTime  0.10000000000000001;"), std::string::npos) << cd;  // the checkpoint's, to 17 digits
+  EXPECT_NE(cd.find("endTime  0.80000000000000004;"), std::string::npos) << cd;  // the scene's, to 17 digits
+  EXPECT_NE(cd.find("writePrecision  17;"), std::string::npos) << cd;
+  EXPECT_NE(out.str().find("resumes from " + (root / "out" / "fluid" / "0.1").string()), std::string::npos) << out.str();
+  EXPECT_TRUE(std::filesystem::exists(root / "out" / "fluid" / "0.15")) << "a later time directory was deleted";
+  std::filesystem::remove_all(root);
+}
+
+TEST(CoupleRun, ARestartWithoutTheMatchingTimeDirectoryNamesBoth) {
+  const auto root = std::filesystem::temp_directory_path() / ("mpmice_of_noresume_" + std::to_string(getpid()));
+  const auto s = resumableRun(root, {"0", "0.05", "0.15"}, 0.1);
+  std::ostringstream out;
+  try {
+    (void)coupler::resumeOpenFoamCase(s, (root / "flap.yaml").string(), (root / "out").string(), out);
+    ADD_FAILURE() << "a checkpoint without its time directory must be refused";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("the checkpoint " + (root / "out" / "flap_checkpoint_000005.h5").string() + " is at t = 0.1"),
+              std::string::npos) << msg;
+    EXPECT_NE(msg.find("OpenFOAM case copy " + (root / "out" / "fluid").string() + " has no time directory"),
+              std::string::npos) << msg;
+    EXPECT_NE(msg.find("(it has: "), std::string::npos) << msg;
+  }
+  std::filesystem::remove_all(root / "out" / "fluid");
+  EXPECT_THROW((void)coupler::resumeOpenFoamCase(s, (root / "flap.yaml").string(), (root / "out").string(), out),
+               std::invalid_argument);  // no case copy at all
+  std::filesystem::remove_all(root);
 }

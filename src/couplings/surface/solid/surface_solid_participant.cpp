@@ -10,6 +10,7 @@
 #include "coupler/acceleration/acceleration.h"
 #include "coupler/iteration/implicit_iteration.h"
 #include "core/io/csv_writer.h"
+#include "core/io/run_checkpoints.h"
 #include "coupler/mapping/mapping.h"
 #include "mpm/solver/health_check.h"
 #include "mpm/solver/mpm_output.h"
@@ -70,7 +71,8 @@ Eigen::VectorXd asVector(const std::vector<double>& v) {
 
 }  // namespace
 
-int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log) {
+int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
+                               const std::string& restart) {
   const core::InterfaceSpec& iface = scene.coupling.interface;
   handshake(p, surfaceHandshakeSections(scene));
   const core::Comm& comm = p.local();
@@ -78,6 +80,10 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   const int dim = scene.mesh.dim();
   const bool oneWay = iface.mode == core::CouplingMode::OneWay;
   const bool implicit = scene.coupling.schedule == core::Schedule::ImplicitSerial;
+  if (oneWay && (scene.output.checkpoint_interval > 0 || !restart.empty()))
+    throw std::invalid_argument(scene.coupling.interface.where.str() +
+                                ": coupling.interface.mode: one_way writes no checkpoints and does not resume (the fluid "
+                                "runs alone first, then the solid): set output.checkpoint_interval: 0, or mode: two_way");
 
   mpm::MpmSolver mpm(scene, comm);
   mpm.enableSurfaceForces();
@@ -88,8 +94,29 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   const SurfaceCloud cloud = gatherSurfaceCloud(mpm);
   const SurfaceSlots slots(cloud);
 
-  const SurfaceSetup setup = receiveSetup(p);
-  checkFluidTime(setup, scene);
+  // A restart: the particles, the clock, the window counters, the displacements the fluid holds,
+  // the acceleration's history and the fluid's patch at t = 0 (the maps are built from it) come
+  // from the checkpoint; the fluid resumes from its time directory of the same time.
+  core::RunCheckpoints checkpoints(scene, comm, scene.name, "mpm_solver (surface-coupled)", restart, &log);
+  const core::CheckpointData* resumed = checkpoints.resumed();
+  std::vector<double> state{0.0, 0.0, 0.0, 0.0};  // t, window, MPM sub-steps, coupling iterations
+  if (resumed) {
+    mpm.loadCheckpoint(*resumed, "mpm");
+    state = resumed->get("run.surface");
+    if (state.size() != 4) throw std::invalid_argument(resumed->source() + ": checkpoint entry 'run.surface' is malformed");
+  }
+  SurfaceSetup setup = receiveSetup(p);
+  checkFluidTime(setup, scene, state[0]);
+  if (resumed) {
+    const auto& faces = resumed->get("surface.face_centres");
+    const auto& points = resumed->get("surface.points");
+    if (faces.size() != setup.faceCentres.size() || points.size() != setup.pointCoords.size())
+      throw std::invalid_argument(resumed->source() + ": the checkpoint's patch has " + std::to_string(faces.size() / 3) +
+                                  " faces and " + std::to_string(points.size() / 3) + " points, the fluid's case " +
+                                  std::to_string(setup.faces) + " and " + std::to_string(setup.points));
+    setup.faceCentres = faces;  // the maps of t = 0 (the fluid's mesh has moved since)
+    setup.pointCoords = points;
+  }
   const double forceScale = dim == 2 ? 1.0 / setup.depth : 1.0;  // 2D MPM: per unit depth
   const PointCloud particles = cloudOf(cloud.x0);
   auto forceMap = makeMapping(iface.mapping, iface.rbf_support);
@@ -97,7 +124,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   auto dispMap = makeMapping(iface.mapping, iface.rbf_support);
   dispMap->compute(particles, cloudOf(setup.pointCoords), dim);
 
-  core::Progress progress(log, comm, 0.0, oneWay ? 2 * scene.time.end : scene.time.end,
+  core::Progress progress(log, comm, state[0], oneWay ? 2 * scene.time.end : scene.time.end,
                           core::ProgressOptions{2.0, 0});
   progress.start(scene.name + " (mpm_solver, surface-coupled to '" + p.peerName() + "', " + std::string(core::name(iface.mode)) + ", " +
                      std::string(core::name(scene.coupling.schedule)) + ")",
@@ -113,18 +140,28 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
   std::unique_ptr<core::CsvWriter> csv;
   if (scene.output.enabled) {
     output = std::make_unique<mpm::MpmOutput>(mpm);
+    const std::string path = scene.output.directory + "/" + scene.name + "_coupling.csv";
+    if (resumed) {
+      core::CsvWriter::cutForResume(comm, path, static_cast<std::int64_t>(resumed->scalar("run.coupling_csv")));
+      output->resumeIndex(resumed->text("run.xdmf"));
+    }
     csv = std::make_unique<core::CsvWriter>(
-        comm, scene.output.directory + "/" + scene.name + "_coupling.csv",
+        comm, path,
         std::vector<std::string>{"window", "time", "dt", "iterations", "converged", "substeps", "force_x", "force_y",
-                                 "force_z", "residual", "compute_s", "exchange_s"});
+                                 "force_z", "residual", "compute_s", "exchange_s"},
+        0, resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
   }
   core::OutputSchedule outputs(scene.output.interval, scene.time.end);
-  if (outputs.due(0.0) && output) {
+  if (resumed) {
+    outputs.resume(resumed->get("run.outputs"));
+  } else if (outputs.due(0.0) && output) {
     mpm.projectToGrid();
     output->write(mpm);
   }
-  const auto probes = mpm::ProbeRecorder::fromScene(mpm);  // collective; null without probes
-  if (probes) probes->record(mpm);
+  // Collective; null without probes.
+  const auto probes =
+      mpm::ProbeRecorder::fromScene(mpm, resumed ? static_cast<std::int64_t>(resumed->scalar("run.probes_csv")) : -1);
+  if (probes && !resumed) probes->record(mpm);
 
   // Implicit: the iterate is the displacement of the patch points; measures and acceleration
   // work on data every solid rank holds in full (a communicator of one).
@@ -139,12 +176,34 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
                                     "' is not exchanged by a surface coupling; valid: interface_displacement, "
                                     "interface_force");
     iteration = std::make_unique<ImplicitIteration>(scene.coupling, conv, self);
+    if (resumed) iteration->load(*resumed, "schedule");
   }
 
-  std::vector<double> dispPoints(3 * static_cast<std::size_t>(setup.points), 0.0);  // what the fluid uses
+  // What the fluid uses (its patch holds the same: the time directory of a restart has it).
+  std::vector<double> dispPoints =
+      resumed ? resumed->get("surface.displacements") : std::vector<double>(3 * static_cast<std::size_t>(setup.points), 0.0);
+  if (dispPoints.size() != 3 * static_cast<std::size_t>(setup.points))
+    throw std::invalid_argument(resumed->source() + ": checkpoint entry 'surface.displacements' is malformed");
   std::vector<double> lastForces;
-  long window = 0, substepsTotal = 0, iterationsTotal = 0;
-  double t = 0;
+  double t = state[0];
+  long window = static_cast<long>(state[1]), substepsTotal = static_cast<long>(state[2]),
+       iterationsTotal = static_cast<long>(state[3]);
+  // After an accepted window (and its output): the solid's checkpoint; the fluid wrote its time
+  // directory of the same time when the reply asked it to.
+  auto checkpoint = [&] {
+    core::CheckpointData data;
+    mpm.saveCheckpoint(data, "mpm");
+    if (iteration) iteration->save(data, "schedule");
+    data.put("run.surface", std::vector<double>{t, double(window), double(substepsTotal), double(iterationsTotal)});
+    data.put("surface.displacements", dispPoints);
+    data.put("surface.face_centres", setup.faceCentres);
+    data.put("surface.points", setup.pointCoords);
+    data.put("run.outputs", outputs.position());
+    data.put("run.coupling_csv", static_cast<double>(csv ? csv->length() : 0));
+    data.put("run.probes_csv", static_cast<double>(probes ? probes->csvLength() : 0));
+    data.putText("run.xdmf", output ? output->indexState() : std::string());
+    checkpoints.write(data, t, window);
+  };
   auto mapForces = [&](const std::vector<double>& faceForces) {
     std::vector<double> f(3 * cloud.size(), 0.0);
     forceMap->mapConservative(faceForces.data(), f.data(), 3);
@@ -175,8 +234,10 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     for (std::size_t i = 0; i < f.size(); ++i) s[i % 3] += f[i];
     return s;
   };
+  bool writeNow = false;  // this window's checkpoint is due (the fluid writes its state too)
   auto reply = [&](WindowAction a, int iterations, const std::vector<double>& d) {
-    sendVector(p, {double(static_cast<int>(a)), double(iterations)}, "window reply");
+    const bool write = a == WindowAction::Advance && writeNow;
+    sendVector(p, {double(static_cast<int>(a)), double(iterations), write ? 1.0 : 0.0}, "window reply");
     sendVector(p, d, "patch displacements");
   };
 
@@ -190,6 +251,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     const std::vector<double> h = receiveVector(p, "window header");
     if (h.size() != 3) throw std::runtime_error("coupler: malformed window header from '" + p.peerName() + "'");
     const WindowHeader head{h[0], h[1], h[2] != 0.0};
+    writeNow = !oneWay && checkpoints.due(head.tEnd, head.last);
     std::vector<double> forces = receiveVector(p, "patch face forces");
     if (forces.size() != 3u * std::size_t(setup.faces))
       throw std::runtime_error("coupler: " + std::to_string(forces.size() / 3) + " face forces from '" +
@@ -269,6 +331,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
     progress.step(static_cast<int>(window), t, head.dt,
                   {{"iters", double(iterations)}, {"iters_total", double(iterationsTotal)}, {"mpm_substeps", double(substeps)}},
                   head.last);
+    if (writeNow) checkpoint();
     if (head.last) break;
   }
 

@@ -20,7 +20,13 @@
 /// (quasi-static with mpm.damping): the classic sequential CFD -> structure workflow.
 /// Writes particles (HDF5/XDMF), probes, and <scene>_coupling.csv (per window: time, iterations,
 /// MPM sub-steps, total interface force, timings).
+/// Restart (two_way): with output.checkpoint_interval, after each window at which a checkpoint is
+/// due the solid writes <scene>_checkpoint_<window>.h5 (particles, clock, window counters, the
+/// displacements the fluid holds, the acceleration's history, the patch of t = 0) and its reply
+/// tells the fluid to write its state of the same time; `restart` (a checkpoint file or an output
+/// directory) resumes from one, the fluid from its matching time directory.
 #include <ostream>
+#include <string>
 
 #include "coupler/launch/participant.h"
 #include "core/scene/scene.h"
@@ -29,6 +35,7 @@ namespace mpmice::coupler {
 
 /// Returns the exit status. Throws CouplingTimeout, HandshakeMismatch, std::invalid_argument
 /// (a fluid case that disagrees with the scene).
-int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log);
+int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, std::ostream& log,
+                               const std::string& restart = "");
 
 }  // namespace mpmice::coupler
