@@ -11,7 +11,7 @@
 namespace mpmice::study {
 
 namespace {
-bool usable(const TradePoint& p) { return std::isfinite(p.wall) && std::isfinite(p.error) && p.wall > 0 && p.error > 0; }
+bool usable(const TradePoint& p) { return std::isfinite(p.cost) && std::isfinite(p.error) && p.cost > 0 && p.error > 0; }
 
 std::string quoted(const std::string& s) {  // a gnuplot string in double quotes
   std::string q = "\"";
@@ -28,7 +28,7 @@ std::vector<std::size_t> paretoFront(const std::vector<TradePoint>& pts) {
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (usable(pts[i])) order.push_back(i);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return pts[a].wall != pts[b].wall ? pts[a].wall < pts[b].wall : pts[a].error < pts[b].error;
+    return pts[a].cost != pts[b].cost ? pts[a].cost < pts[b].cost : pts[a].error < pts[b].error;
   });
   std::vector<std::size_t> front;
   double best = INFINITY;
@@ -40,23 +40,24 @@ std::vector<std::size_t> paretoFront(const std::vector<TradePoint>& pts) {
   return front;
 }
 
-std::string plotPareto(const std::vector<TradePoint>& pts, const std::string& prefix, const std::string& title) {
+std::string plotPareto(const std::vector<TradePoint>& pts, const std::string& prefix, const std::string& title,
+                       const std::string& costLabel) {
   const auto front = paretoFront(pts);
-  if (front.empty()) return "no point has a finite error and wall time to draw";
+  if (front.empty()) return "no point has a finite error and cost to draw";
   {
     std::ofstream dat(prefix + "_pareto.dat");
-    dat << std::setprecision(10) << "# wall_s error label side (every usable point; side: label above or below)\n";
+    dat << std::setprecision(10) << "# cost_s error label side (every usable point; side: label above or below)\n";
     int side = 0;
     for (const auto& p : pts)
-      if (usable(p)) dat << p.wall << ' ' << p.error << ' ' << quoted(p.label) << ' ' << (side++ % 2) << '\n';
+      if (usable(p)) dat << p.cost << ' ' << p.error << ' ' << quoted(p.label) << ' ' << (side++ % 2) << '\n';
     dat << "\n\n# the Pareto front, fastest first\n";
-    for (std::size_t i : front) dat << pts[i].wall << ' ' << pts[i].error << ' ' << quoted(pts[i].label) << '\n';
+    for (std::size_t i : front) dat << pts[i].cost << ' ' << pts[i].error << ' ' << quoted(pts[i].label) << '\n';
   }
   double w0 = INFINITY, w1 = 0, e0 = INFINITY, e1 = 0;
   for (const auto& p : pts)
     if (usable(p)) {
-      w0 = std::min(w0, p.wall);
-      w1 = std::max(w1, p.wall);
+      w0 = std::min(w0, p.cost);
+      w1 = std::max(w1, p.cost);
       e0 = std::min(e0, p.error);
       e1 = std::max(e1, p.error);
     }
@@ -65,7 +66,7 @@ std::string plotPareto(const std::vector<TradePoint>& pts, const std::string& pr
     std::ofstream gp(prefix + "_pareto.gp");
     gp << "set terminal pngcairo size 1000,700 font ',10'\nset output " << quoted(png) << "\n"
        << "set logscale xy\nset grid xtics ytics mxtics mytics\nset key top right\n"
-       << "set xlabel 'wall time per run [s]'\nset ylabel 'error against the reference'\n"
+       << "set xlabel " << quoted(costLabel) << "\nset ylabel 'error against the reference'\n"
        << "set title " << quoted(title) << " noenhanced\n"
        << "set xrange [" << w0 / 1.5 << ":" << w1 * 4 << "]\nset yrange [" << e0 / 1.5 << ":" << e1 * 1.5 << "]\n"
        << "plot " << quoted(prefix + "_pareto.dat") << " index 0 using 1:2 with points pt 7 ps 1.2 title 'runs', \\\n"

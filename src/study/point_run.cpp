@@ -51,6 +51,13 @@ std::string programNote(const std::string& text) {
   return ours.empty() ? last : ours;
 }
 
+namespace {
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+}  // namespace
+
 PointResult runPoint(const std::vector<std::string>& argv, const std::string& runDir, double timeLimit, int repeats,
                      const Reference& ref, const RunFiles& files) {
   PointResult r;
@@ -60,14 +67,14 @@ PointResult runPoint(const std::vector<std::string>& argv, const std::string& ru
     log = runDir + (k == 1 ? std::string("/run.log") : "/run_" + std::to_string(k) + ".log");
     run = coupler::runToFileWithin(argv, log, timeLimit);
     r.walls.push_back(run.wallSeconds);
+    r.cpus.push_back(run.cpuSeconds);
     r.peakRssMb = std::max(r.peakRssMb, double(run.peakRssKb) / 1024.0);
     if (run.timedOut || run.stoppedBy != 0 || run.status != 0) break;
   }
   r.stoppedBy = run.stoppedBy;
   r.exitCode = run.status;
-  std::vector<double> w = r.walls;
-  std::sort(w.begin(), w.end());
-  r.wallSeconds = w.size() % 2 ? w[w.size() / 2] : 0.5 * (w[w.size() / 2 - 1] + w[w.size() / 2]);
+  r.wallSeconds = median(r.walls);
+  r.cpuSeconds = median(r.cpus);
   r.error = std::numeric_limits<double>::quiet_NaN();
   std::ifstream in(log);
   std::stringstream text;
@@ -113,6 +120,8 @@ std::string resultYaml(const PointResult& r) {
   e << YAML::Key << "exit_code" << YAML::Value << r.exitCode;
   e << YAML::Key << "wall_s" << YAML::Value << r.wallSeconds;
   e << YAML::Key << "walls_s" << YAML::Value << YAML::Flow << r.walls;
+  e << YAML::Key << "cpu_s" << YAML::Value << r.cpuSeconds;
+  e << YAML::Key << "cpus_s" << YAML::Value << YAML::Flow << r.cpus;
   e << YAML::Key << "peak_rss_mb" << YAML::Value << r.peakRssMb;
   e << YAML::Key << "steps" << YAML::Value << r.steps;
   e << YAML::Key << "iterations_per_step" << YAML::Value << r.iterationsPerStep;
@@ -129,6 +138,9 @@ PointResult readResult(const std::string& file) {
   r.exitCode = n["exit_code"].as<int>();
   r.wallSeconds = n["wall_s"].as<double>();
   r.walls = n["walls_s"] ? n["walls_s"].as<std::vector<double>>() : std::vector<double>{r.wallSeconds};
+  // Results written before the CPU time was recorded have none: NaN, so they drop out of a CPU plot.
+  r.cpuSeconds = n["cpu_s"] ? n["cpu_s"].as<double>() : std::numeric_limits<double>::quiet_NaN();
+  r.cpus = n["cpus_s"] ? n["cpus_s"].as<std::vector<double>>() : std::vector<double>{r.cpuSeconds};
   r.peakRssMb = n["peak_rss_mb"].as<double>();
   r.steps = n["steps"].as<long>();
   r.iterationsPerStep = n["iterations_per_step"].as<double>();

@@ -30,6 +30,8 @@ struct PointResult {
   int exitCode = 0;
   double wallSeconds = 0;  // the median over the repeats
   std::vector<double> walls;  // every repeat's
+  double cpuSeconds = 0;   // user + system time of the program and its children, the median over the repeats
+  std::vector<double> cpus;   // every repeat's
   double peakRssMb = 0;
   long steps = -1;
   double iterationsPerStep = -1;
@@ -39,8 +41,8 @@ struct PointResult {
 };
 
 /// Runs `argv` `repeats` times (stopping at the first that does not end 0), each with its output
-/// into `<runDir>/run.log` (then run_2.log, ...) within `timeLimit` seconds; the wall time is
-/// the median of the runs, the peak RSS their largest. Then measures the error of `files` (the
+/// into `<runDir>/run.log` (then run_2.log, ...) within `timeLimit` seconds; the wall and CPU
+/// times are the medians of the runs, the peak RSS their largest. Then measures the error of `files` (the
 /// last run's output) with `ref` when every run ended 0.
 PointResult runPoint(const std::vector<std::string>& argv, const std::string& runDir, double timeLimit, int repeats,
                      const Reference& ref, const RunFiles& files);

@@ -126,10 +126,11 @@ Study readStudy(const std::string& path) {
   } catch (const YAML::Exception& e) {
     fail(path, "", std::string("not valid YAML: ") + e.what());
   }
-  const std::string keys = "study, scene, program, reference, time_limit, repeats, set, axes, points, base, factors, slices";
+  const std::string keys =
+      "study, scene, program, reference, time_limit, repeats, cost, set, axes, points, base, factors, slices";
   if (!root.IsMap()) fail(path, "", "expected a mapping (" + keys + ")");
-  const std::set<std::string> known{"study",  "scene", "program", "reference", "time_limit", "repeats",
-                                    "set",    "axes",  "points",  "base",      "factors",    "slices"};
+  const std::set<std::string> known{"study", "scene",  "program", "reference", "time_limit", "repeats", "cost",
+                                    "set",   "axes",   "points",  "base",      "factors",    "slices"};
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
     if (!known.count(k)) fail(path, k, "unknown key (valid: " + keys + ")");
@@ -166,6 +167,12 @@ Study readStudy(const std::string& path) {
       fail(path, "repeats", "expected an integer >= 1");
     }
     if (s.repeats < 1) fail(path, "repeats", "expected an integer >= 1, got " + std::to_string(s.repeats));
+  }
+  if (root["cost"]) {
+    const std::string cost = scalar(path, root["cost"], "cost");
+    if (cost == "wall") s.cost = Cost::Wall;
+    else if (cost == "cpu") s.cost = Cost::Cpu;
+    else fail(path, "cost", "'" + cost + "' is not a cost (valid: wall, cpu)");
   }
   if (root["set"]) s.set = pairs(path, root["set"], "set");
   for (const auto& [k, v] : s.set)

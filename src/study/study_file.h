@@ -20,6 +20,11 @@ class StudyError : public std::runtime_error {
 /// How each point runs.
 enum class Program { Mpmice, CouplerRun };
 
+/// The cost axis of the Pareto plot: the wall time of each run, or its CPU time (user + system of
+/// the program and every process it started; steadier than the wall time on a shared machine,
+/// and it counts every rank of a parallel run).
+enum class Cost { Wall, Cpu };
+
 struct Study {
   std::string file;        // the study file as given
   std::string name;        // `study`, default: the file's stem
@@ -28,6 +33,7 @@ struct Study {
   std::string reference;   // a name of the reference registry (study/reference/references.h)
   double timeLimit = 3600; // [s] per run
   int repeats = 1;         // runs per point: the wall time is their median (the machine is noisy)
+  Cost cost = Cost::Wall;  // `cost: wall | cpu`, the Pareto plot's time axis
   std::vector<std::pair<std::string, YAML::Node>> set;  // applied to every point, before its own settings
   std::vector<Axis> axes;  // the full grid, or empty with `points`
   std::vector<Point> points;  // expanded: the grid or the explicit list

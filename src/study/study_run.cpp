@@ -144,7 +144,8 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
     }
     if (done) {
       out << "study " << s.name << ": point " << i + 1 << "/" << s.points.size() << " (" << label
-          << "): finished before, skipped (error " << num(r.error, 4) << ", wall " << num(r.wallSeconds, 3) << " s)\n";
+          << "): finished before, skipped (error " << num(r.error, 4) << ", wall " << num(r.wallSeconds, 3) << " s, CPU "
+          << num(r.cpuSeconds, 3) << " s)\n";
     } else {
       fs::create_directories(pr.dir);
       writeText(sceneFile, pr.sceneText);
@@ -159,13 +160,13 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
         return 128 + r.stoppedBy;
       }
       writeText(resultFile, resultYaml(r));
-      out << "  " << r.status << ": error " << num(r.error, 4) << ", wall " << num(r.wallSeconds, 3) << " s"
-          << (r.walls.size() > 1 ? " (median of " + std::to_string(r.walls.size()) + ")" : "") << ", " << r.steps << " steps, " << num(r.iterationsPerStep, 3) << " iterations per step, peak RSS "
+      out << "  " << r.status << ": error " << num(r.error, 4) << ", wall " << num(r.wallSeconds, 3) << " s, CPU "
+          << num(r.cpuSeconds, 3) << " s" << (r.walls.size() > 1 ? " (median of " + std::to_string(r.walls.size()) + ")" : "") << ", " << r.steps << " steps, " << num(r.iterationsPerStep, 3) << " iterations per step, peak RSS "
           << num(r.peakRssMb, 4) << " MB" << (r.note.empty() ? "" : " (" + r.note + ")") << std::endl;
     }
     if (r.status == "ok") ++ok;
     results.push_back(r);
-    trade.push_back(TradePoint{label, r.wallSeconds, r.error});
+    trade.push_back(TradePoint{label, s.cost == Cost::Cpu ? r.cpuSeconds : r.wallSeconds, r.error});
   }
   // 4. The CSV and the plot.
   const fs::path csv = root / (s.name + ".csv");
@@ -173,7 +174,7 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
     std::ostringstream c;
     c << "point";
     for (const auto& k : s.columns) c << ',' << csvField(k);
-    c << ",error,wall_s,runs,steps,iterations_per_step,peak_rss_mb,status,exit_code,run,note\n";
+    c << ",error,wall_s,cpu_s,runs,steps,iterations_per_step,peak_rss_mb,status,exit_code,run,note\n";
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       const auto& r = results[i];
       c << i + 1;
@@ -183,15 +184,18 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
           if (key == k) v = valueText(val);
         c << ',' << csvField(v);
       }
-      c << ',' << num(r.error, 8) << ',' << num(r.wallSeconds, 6) << ',' << r.walls.size() << ',' << r.steps << ','
+      c << ',' << num(r.error, 8) << ',' << num(r.wallSeconds, 6) << ',' << num(r.cpuSeconds, 6) << ',' << r.walls.size() << ',' << r.steps << ','
         << num(r.iterationsPerStep, 6) << ',' << num(r.peakRssMb, 6) << ',' << r.status << ',' << r.exitCode << ','
         << csvField(prepared[i].dir.filename().string()) << ',' << csvField(r.note) << '\n';
     }
     writeText(csv, c.str());
   }
   out << "study " << s.name << ": " << ok << " of " << s.points.size() << " points ok; wrote " << csv.string() << "\n";
+  const bool cpu = s.cost == Cost::Cpu;
   const std::string why = plotPareto(trade, (root / s.name).string(),
-                                     "study " + s.name + ": error against wall time (" + s.reference + ")");
+                                     "study " + s.name + ": error against " + (cpu ? "CPU" : "wall") + " time (" +
+                                         s.reference + ")",
+                                     cpu ? "CPU time per run (user + system, every process) [s]" : "wall time per run [s]");
   if (why.empty())
     out << "study " << s.name << ": wrote " << (root / (s.name + "_pareto.png")).string() << "\n";
   else

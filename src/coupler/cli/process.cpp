@@ -214,6 +214,8 @@ TimedRun runToFileWithin(const std::vector<std::string>& argv, const std::string
   run.wallSeconds = seconds();
   run.status = shellStatus(status);
   run.peakRssKb = usage.ru_maxrss;
+  run.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                   1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   return run;
 }
 

@@ -54,6 +54,8 @@ struct TimedRun {
   bool timedOut = false;      // the time limit ended it (its group got SIGTERM, then SIGKILL)
   int stoppedBy = 0;          // a SIGINT / SIGTERM recorded by a live StopSignals, forwarded to its group
   double wallSeconds = 0;     // from start to reaping
+  double cpuSeconds = 0;      // wait4's user + system time of the process and of every descendant
+                              // it waited for (an mpirun's ranks included): the run's CPU cost
   long peakRssKb = 0;         // wait4's ru_maxrss: the largest resident set of the process or of
                               // any descendant it waited for (the largest one, not a sum)
 };

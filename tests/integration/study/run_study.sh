@@ -36,18 +36,19 @@ cat run1.txt
 csv=out/three.csv
 [ -f "$csv" ] || { fail "no $csv"; exit 1; }
 cat "$csv"
-[ "$(head -1 "$csv")" = "point,mpm.shape_function,error,wall_s,runs,steps,iterations_per_step,peak_rss_mb,status,exit_code,run,note" ] ||
+[ "$(head -1 "$csv")" = "point,mpm.shape_function,error,wall_s,cpu_s,runs,steps,iterations_per_step,peak_rss_mb,status,exit_code,run,note" ] ||
   fail "CSV header: $(head -1 "$csv")"
 [ "$(tail -n +2 "$csv" | wc -l)" -eq 3 ] || fail "expected 3 rows"
 [ "$(tail -n +2 "$csv" | cut -d, -f2 | paste -sd' ')" = "linear bspline2 bspline3" ] || fail "rows out of order"
 awk -F, 'NR > 1 {
   if ($3 == "nan" || $3 == "inf" || !($3 + 0 > 0) || !($3 + 0 < 1e3)) { print "FAIL: row " NR - 1 ": error " $3; bad = 1 }
-  if ($9 != "ok") { print "FAIL: row " NR - 1 ": status " $9; bad = 1 }
+  if ($10 != "ok") { print "FAIL: row " NR - 1 ": status " $10; bad = 1 }
   if (!($4 + 0 > 0)) { print "FAIL: row " NR - 1 ": wall " $4; bad = 1 }
-  if (!($6 + 0 > 0)) { print "FAIL: row " NR - 1 ": steps " $6; bad = 1 }
-  if ($7 != "1") { print "FAIL: row " NR - 1 ": iterations per step " $7; bad = 1 }
-  if (!($8 + 0 > 0)) { print "FAIL: row " NR - 1 ": peak RSS " $8; bad = 1 }
-  if ($10 != "0") { print "FAIL: row " NR - 1 ": exit " $10; bad = 1 }
+  if (!($5 + 0 > 0)) { print "FAIL: row " NR - 1 ": CPU " $5; bad = 1 }
+  if (!($7 + 0 > 0)) { print "FAIL: row " NR - 1 ": steps " $7; bad = 1 }
+  if ($8 != "1") { print "FAIL: row " NR - 1 ": iterations per step " $8; bad = 1 }
+  if (!($9 + 0 > 0)) { print "FAIL: row " NR - 1 ": peak RSS " $9; bad = 1 }
+  if ($11 != "0") { print "FAIL: row " NR - 1 ": exit " $11; bad = 1 }
 } END { exit bad }' "$csv" || status=1
 for d in 001_linear 002_bspline2 003_bspline3; do
   for f in scene.yaml run.log result.yaml command.txt pressurized_cylinder_run.yaml; do
@@ -62,7 +63,7 @@ fi
 
 # 2. An existing study folder is refused and left alone.
 sum=$(cat out/three.csv out/*/result.yaml | md5sum)
-before=$(cut -d, -f1-3,9 out/three.csv)
+before=$(cut -d, -f1-3,10 out/three.csv)
 "$study" three.yaml --out out >run2.txt 2>&1
 rc=$?
 cat run2.txt
@@ -83,7 +84,7 @@ rc=$?
 cat run3.txt
 [ $rc -eq 0 ] || fail "--resume exited $rc"
 [ "$(grep -c 'finished before, skipped' run3.txt)" -eq 3 ] || fail "--resume did not skip the three points"
-[ "$(cut -d, -f1-3,9 out/three.csv)" = "$before" ] || fail "--resume changed the rows"
+[ "$(cut -d, -f1-3,10 out/three.csv)" = "$before" ] || fail "--resume changed the rows"
 
 # 4. A point stopped by its time limit.
 cat >slow.yaml <<EOS
@@ -99,7 +100,7 @@ EOS
 rc=$?
 cat run4.txt
 [ $rc -eq 3 ] || fail "a timed-out point: exit $rc, expected 3"
-[ "$(tail -n +2 slow/slow.csv | cut -d, -f9)" = timeout ] || fail "status of the timed-out point: $(cat slow/slow.csv)"
+[ "$(tail -n +2 slow/slow.csv | cut -d, -f10)" = timeout ] || fail "status of the timed-out point: $(cat slow/slow.csv)"
 [ "$(tail -n +2 slow/slow.csv | cut -d, -f3)" = nan ] || fail "a timed-out point has an error"
 
 # 5. The MPMD program.
@@ -118,7 +119,7 @@ EOS
 rc=$?
 cat run5.txt
 [ $rc -eq 0 ] || fail "the MPMD study exited $rc"
-awk -F, 'NR > 1 && ($9 != "ok" || $3 == "nan" || !($3 + 0 > 0)) { print "FAIL: MPMD row " NR - 1 ": " $0; bad = 1 }
+awk -F, 'NR > 1 && ($10 != "ok" || $3 == "nan" || !($3 + 0 > 0) || !($5 + 0 > 0)) { print "FAIL: MPMD row " NR - 1 ": " $0; bad = 1 }
          END { exit bad || NR != 3 }' mpmd/mpmd.csv || { fail "MPMD CSV"; cat mpmd/mpmd.csv; }
 [ -f mpmd/001_linear/pressurized_cylinder_solid_run.yaml ] || fail "the MPMD point left no solid run record"
 

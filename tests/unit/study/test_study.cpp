@@ -195,6 +195,8 @@ TEST_F(StudyFileTest, ReadsAGridAndAnExplicitList) {
   EXPECT_EQ(s.program, Program::Mpmice);
   EXPECT_EQ(s.timeLimit, 30);
   EXPECT_EQ(s.repeats, 2);
+  EXPECT_EQ(s.cost, Cost::Wall);  // the default
+  EXPECT_EQ(readStudy(write("cost: cpu\naxes: {mesh.spacing: [0.1]}\n")).cost, Cost::Cpu);
   EXPECT_EQ(s.points.size(), 6u);
   EXPECT_EQ(s.columns, (std::vector<std::string>{"mesh.spacing", "geometry[wall].particles_per_cell"}));
   const YAML::Node v = variantScene(s, YAML::LoadFile(TINY_CYLINDER), s.points[5], "/tmp/run5");
@@ -329,6 +331,7 @@ TEST_F(StudyFileTest, BadInputNamesTheFileAndTheKey) {
            Case{head + "reference: lame_cylinder\nprogram: mpirun\naxes: {mesh.spacing: [0.1]}\n", "'program'", "valid: mpmice, coupler_run"},
            Case{head + "reference: lame_cylinder\ntime_limit: 0\naxes: {mesh.spacing: [0.1]}\n", "'time_limit'", "> 0"},
            Case{head + "reference: lame_cylinder\nrepeats: 0\naxes: {mesh.spacing: [0.1]}\n", "'repeats'", ">= 1"},
+           Case{head + "reference: lame_cylinder\ncost: gpu\naxes: {mesh.spacing: [0.1]}\n", "'cost'", "valid: wall, cpu"},
            Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: []}\n", "'axes.mesh.spacing'", "non-empty list"},
            Case{head + "reference: lame_cylinder\naxes: {mesh.spacing: 0.1}\n", "'axes.mesh.spacing'", "non-empty list"},
            Case{head + "reference: lame_cylinder\n", "'axes'", "required"},
@@ -391,6 +394,8 @@ TEST(RunLog, AResultReadsBack) {
   r.exitCode = 0;
   r.wallSeconds = 2.5;
   r.walls = {2.4, 2.5, 3.1};
+  r.cpuSeconds = 4.75;
+  r.cpus = {4.5, 4.75, 6.0};
   r.peakRssMb = 31.25;
   r.steps = 99;
   r.iterationsPerStep = 1.5;
@@ -402,6 +407,8 @@ TEST(RunLog, AResultReadsBack) {
   fs::remove(f);
   EXPECT_EQ(b.status, "ok");
   EXPECT_EQ(b.walls, r.walls);
+  EXPECT_EQ(b.cpus, r.cpus);
+  EXPECT_DOUBLE_EQ(b.cpuSeconds, 4.75);
   EXPECT_EQ(b.steps, 99);
   EXPECT_DOUBLE_EQ(b.error, 0.0843125);
   EXPECT_DOUBLE_EQ(b.iterationsPerStep, 1.5);
@@ -410,13 +417,16 @@ TEST(RunLog, AResultReadsBack) {
   r.status = "failed";
   std::ofstream(f) << resultYaml(r);
   EXPECT_TRUE(std::isnan(readResult(f.string()).error));
+  // A result written before the CPU time was recorded reads back without one.
+  std::ofstream(f) << "status: ok\nexit_code: 0\nwall_s: 2\npeak_rss_mb: 3\nsteps: 4\niterations_per_step: 1\nerror: 0.5\n";
+  EXPECT_TRUE(std::isnan(readResult(f.string()).cpuSeconds));
   fs::remove(f);
 }
 
 TEST(Pareto, FrontIsTheUndominatedPointsFastestFirst) {
   const std::vector<TradePoint> pts{{"a", 10, 0.05}, {"b", 1, 0.2}, {"c", 2, 0.3}, {"d", 5, 0.1},
                                     {"e", 20, 0.06}, {"f", 3, NAN}, {"g", 0, 0.01}, {"h", 5, 0.08}};
-  EXPECT_EQ(paretoFront(pts), (std::vector<std::size_t>{1, 7, 0}));  // b, h (beats d at equal wall), a
+  EXPECT_EQ(paretoFront(pts), (std::vector<std::size_t>{1, 7, 0}));  // b, h (beats d at equal cost), a
 }
 
 TEST(References, RegistryByNameAndTheValidChoices) {
