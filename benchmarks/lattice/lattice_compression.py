@@ -135,9 +135,14 @@ def summarize(strain, stress):
 
 
 def parse_log(text):
-    m = re.search(r"done: (\d+) steps, .*wall ([0-9.]+) s.*?([0-9.e+]+) particle-steps/s", text)
-    n = re.search(r"particles: (\d+)", text)
-    return (int(m.group(1)), float(m.group(2)), float(m.group(3)), int(n.group(1))) if m and n else (0, 0, 0, 0)
+    """(steps, wall [s], particle-steps/s, particles) from a run's log; a run that stopped: its
+    last progress line."""
+    n = re.search(r"particles: (\d+)", text) or re.search(r", (\d+) particles\)", text)
+    steps = re.findall(r"^(?:done: |step )(\d+)[ ,].*?wall ([0-9.]+) s", text, re.M)
+    if not (n and steps):
+        return 0, 0, 0, 0
+    k, wall = int(steps[-1][0]), float(steps[-1][1])
+    return k, wall, k * int(n.group(1)) / wall, int(n.group(1))
 
 
 def gnuplot(script, png):
@@ -255,7 +260,7 @@ def filled_study(args):
                         "densification_strain": e_d, "absorbed_MJ_per_m3": w_d / 1e6,
                         "absorbed_to_50pct_MJ_per_m3": float(np.trapz(np.concatenate(([0.0], stress[strain <= 0.5])),
                                                                        np.concatenate(([0.0], strain[strain <= 0.5])))) / 1e6,
-                        "plate_force_plateau_MPa": plate_plateau / 1e6,
+                        "plate_force_plateau_MPa": plate_plateau / 1e6, "end_strain": float(strain[-1]),
                         "particles": particles, "steps": steps, "wall_s": wall})
     empty = {r["a_mm"]: r for r in summary if not r["filled"]}
     for r in summary:
