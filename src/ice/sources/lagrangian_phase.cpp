@@ -108,7 +108,11 @@ void IceSolver::computeSourcesAndLagrangian() {
           for (int sgn = -1; sgn <= 1; sgn += 2) {
             int n[3] = {i, j, k};
             n[d] += sgn;
-            const double tb = 0.5 * (tc + m.theta(n[0], n[1], n[2])) / tc / (mesh_.dx(d) * mesh_.dx(d));
+            // The face's share of the material is the smaller of its cells' (not their mean): a
+            // trace beside a full cell then diffuses at most at nu, so the explicit viscous bound
+            // dt <= dx^2 / (2 dim nu) holds in every cell (with the mean, a trace of theta got
+            // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
+            const double tb = std::min(tc, m.theta(n[0], n[1], n[2])) / tc / (mesh_.dx(d) * mesh_.dx(d));
             if (m.viscosity > 0)
               for (int q = 0; q < dim; ++q) du[q] += tb * (m.vel(n[0], n[1], n[2], q) - m.vel(i, j, k, q));
             if (m.conductivity > 0) {
