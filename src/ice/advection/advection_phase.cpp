@@ -215,13 +215,16 @@ void IceSolver::advectFluids() {
       if (eA > 0 && eE < kMinEnergyShare * eA) {
         e[c] = eA;
         ++fallbacks_;
+        audit_.add(mass * (eA - eE), c, r);  // not conservative: the energy it adds is audited
       } else {
         e[c] = eE;
       }
       ms[c] = mass;
       v[c] = a[kVolume][c] * inv;
+      audit_.localEnergy += mass * (e[c] + 0.5 * ke);
     }
   }
+  audit_.endStep(comm_);
   t_ += dt;
   ++nsteps_;
 }

@@ -101,7 +101,28 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
 }
 }  // namespace
 
+namespace {
+// The energy audit (energy_audit.h): the same totals on every rank; the rank that holds its
+// largest fallback names that cell.
+std::string auditViolation(const IceSolver& s) {
+  const EnergyAudit& a = s.energyAudit();
+  if (!a.exceeded() || a.worstCell < 0) return "";
+  const core::Box& sb = s.state().press.box();
+  const std::int64_t nx = sb.length(0), ny = sb.length(1), c = a.worstCell;
+  const int i = static_cast<int>(c % nx) + sb.lo[0], j = static_cast<int>((c / nx) % ny) + sb.lo[1],
+            k = static_cast<int>(c / (nx * ny)) + sb.lo[2];
+  std::ostringstream exp;
+  exp.precision(6);
+  exp << "at most " << kMaxCreatedEnergyShare << " of the fluids' total energy " << a.energy
+      << " J; the largest single fallback, " << a.worst << " J, was of fluid '"
+      << s.state().mat[static_cast<std::size_t>(a.worstMaterial)].name << "'";
+  return describe(s, "energy created by the non-conservative internal-energy fallbacks [J]", "", a.created,
+                  exp.str(), i, j, k);
+}
+}  // namespace
+
 std::string findViolation(const IceSolver& s) {
+  if (std::string bad = auditViolation(s); !bad.empty()) return bad;
   const IceState& st = s.state();
   const core::Box& sb = st.press.box();
   const int dim = s.mesh().dim();

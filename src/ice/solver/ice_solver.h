@@ -27,6 +27,7 @@
 #include "core/parallel/ghost_exchange.h"
 #include "ice/pressure/equilibrium_pressure.h"
 #include "core/scene/scene.h"
+#include "ice/solver/energy_audit.h"
 #include "ice/solver/scratch.h"
 #include "ice/state/ice_state.h"
 
@@ -126,6 +127,8 @@ class IceSolver {
   [[nodiscard]] bool semiImplicit() const { return semiImplicit_; }
   /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
   [[nodiscard]] long energyFallbacks() const { return fallbacks_; }
+  /// The energy those fallbacks added (energy_audit.h; the health check reads it).
+  [[nodiscard]] const EnergyAudit& energyAudit() const { return audit_; }
 
  private:
   void initialize(const core::Scene& scene);
@@ -183,6 +186,7 @@ class IceSolver {
   core::StepCollapse collapse_{0.0};  // time.dt_collapse_fraction (step())
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0;
+  EnergyAudit audit_;
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
   SemiImplicitScratch semi_;

@@ -56,7 +56,7 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   });
   data.put(prefix + ".clock", std::vector<double>{t_, static_cast<double>(nsteps_), dt_, collapse_.first(),
                                                   static_cast<double>(fallbacks_), static_cast<double>(linIters_),
-                                                  static_cast<double>(linItersTotal_)});
+                                                  static_cast<double>(linItersTotal_), audit_.created, audit_.energy});
 }
 
 void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
@@ -64,9 +64,9 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
     data.copyTo(cat(cat(prefix, "."), name), std::span<double>(f.data(), sizeOf(f)));
   });
   const auto& c = data.get(prefix + ".clock");
-  if (c.size() != 7)
+  if (c.size() != 7 && c.size() != 9)  // 7: written before the energy audit (its sums start at 0)
     throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".clock' has " +
-                                std::to_string(c.size()) + " values, expected 7");
+                                std::to_string(c.size()) + " values, expected 9");
   t_ = c[0];
   nsteps_ = static_cast<long>(c[1]);
   dt_ = c[2];
@@ -74,6 +74,7 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
   fallbacks_ = static_cast<long>(c[4]);
   linIters_ = static_cast<int>(c[5]);
   linItersTotal_ = static_cast<long>(c[6]);
+  if (c.size() == 9) audit_.created = c[7], audit_.energy = c[8];
 }
 
 }  // namespace mpmice::ice

@@ -83,11 +83,16 @@ void IceSolver::computeSourcesAndLagrangian() {
     }
     if (fix && kbar > 0) {
       const double D = dEflux - dKE - dIE;
-      for (const Ptr& P : ptr) {
+      for (int r = 0; r < nm; ++r) {
+        const Ptr& P = ptr[r];
         const double e0 = P.eL[c];
         const double e1 = e0 + (P.ka[c] / kbar) * P.v[c] * D / V;
-        if (e0 > 0 && e1 < kMinEnergyShare * e0) ++fallbacks_;  // would drain the internal energy: keep e0
-        else P.eL[c] = e1;
+        if (e0 > 0 && e1 < kMinEnergyShare * e0) {  // would drain the internal energy: keep e0
+          ++fallbacks_;
+          audit_.add(P.m[c] * (e0 - e1), c, r);  // the share of D not taken (audited)
+        } else {
+          P.eL[c] = e1;
+        }
       }
     }
     if (anyGravity_)

@@ -66,7 +66,28 @@ struct ShockResult {
   double overRho = 0, overP = 0;   // the largest overshoot behind any shock, % of the jump
   double contactU = 0;             // max |u - u*| within 5 cells of a stationary contact / fastest wave speed
   double minP = 0;
+  double createdShare = 0;         // energy the fallbacks created / total energy (energy_audit.h)
 };
+
+/// ICE_SHOCK_TRACE="case,from,to,i0,i1": after each step from..to of that case, every material's
+/// mass, volume fraction, e, v and u in cells i0..i1 (the water-air analysis in docs/ice.md).
+inline void traceCells(const ice::IceSolver& s, const std::string& name) {
+  const char* env = std::getenv("ICE_SHOCK_TRACE");
+  if (!env) return;
+  char which[64] = "";
+  long from = 0, to = 0;
+  int i0 = 0, i1 = -1;
+  if (std::sscanf(env, "%63[^,],%ld,%ld,%d,%d", which, &from, &to, &i0, &i1) != 5 || name != which) return;
+  if (s.steps() < from || s.steps() > to) return;
+  std::printf("step %ld t %g\n", s.steps(), s.time());
+  for (int i = i0; i <= i1; ++i) {
+    std::printf("%5d p %+.4e", i, s.pressure()(i, 0, 0));
+    for (const auto& M : s.state().mat)
+      std::printf(" | %s m %.3e th %.3e e %.4e v %.4e u %+.3e", M.name.c_str(), M.mass(i, 0, 0), M.theta(i, 0, 0),
+                  M.eint(i, 0, 0), M.spvol(i, 0, 0), M.vel(i, 0, 0, 0));
+    std::printf("\n");
+  }
+}
 
 inline ShockResult runShockCase(const ShockCase& c, int n, const TubeOptions& o) {
   ShockResult r;
@@ -75,9 +96,11 @@ inline ShockResult runShockCase(const ShockCase& c, int n, const TubeOptions& o)
     ice::IceSolver s(shockCaseScene(c, n, o), comm());
     while (s.time() < c.t * (1 - 1e-12)) {
       s.step();
+      traceCells(s, c.name);
       ice::checkHealth(s);
     }
     r.steps = s.steps();
+    r.createdShare = s.energyAudit().created / std::abs(s.energyAudit().energy);
     r.l1 = l1Density(s, [&](double x) { return ex.sample((x - c.x0) / c.t).rho; });
     const double dx = 1.0 / n, xc = c.x0 + ex.uStar() * c.t;
     const double cL = std::sqrt(c.gl.gamma * (c.L.p + c.gl.pinf) / c.L.rho);

@@ -64,8 +64,8 @@ int main(int argc, char** argv) {
         std::printf("%-14s %5d cells: STOPPED (%s)\n", c.name.c_str(), n, r.error.c_str());
         continue;
       }
-      std::printf("%-14s %5d cells: L1(rho) %.4e  overshoot rho %+.2f %% p %+.2f %%  contact |u-u*|/speed %.1e  steps %ld\n",
-                  c.name.c_str(), n, r.l1, r.overRho, r.overP, r.contactU, r.steps);
+      std::printf("%-14s %5d cells: L1(rho) %.4e  overshoot rho %+.2f %% p %+.2f %%  contact |u-u*|/speed %.1e  steps %ld  created energy %.1e\n",
+                  c.name.c_str(), n, r.l1, r.overRho, r.overP, r.contactU, r.steps, r.createdShare);
       err.push_back(r.l1);
       ns.push_back(n);
     }
