@@ -213,7 +213,7 @@ struct AccelerationSpec {
   AccelerationType type = AccelerationType::None;
   double relaxation = 0.5;        // constant; the initial one for aitken and iqn_ils
   int reuse = 8;                  // iqn_ils: past steps kept
-  double filter = 1e-8;           // iqn_ils: QR filter threshold
+  double filter = 1e-2;           // iqn_ils: QR filter threshold (docs/coupling.md: why 1e-2)
   bool preconditioner = false;    // iqn_ils: residual_sum (true) or none (default; docs/coupling.md)
   bool operator==(const AccelerationSpec&) const = default;
 };

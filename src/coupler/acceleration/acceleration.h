@@ -24,7 +24,7 @@ struct AccelerationParams {
   std::string type = "none";
   double relaxation = 0.5;
   int reuse = 8;
-  double filter = 1e-8;
+  double filter = 1e-2;
   bool precondition = false;  // iqn_ils: the residual-sum preconditioner over the iterate's segments
 };
 

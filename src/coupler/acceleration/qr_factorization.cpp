@@ -1,15 +1,20 @@
 #include "coupler/acceleration/qr_factorization.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mpmice::coupler {
 
-void QrFactorization::rotate(int i, int k, double c, double s, int from) {
+void QrFactorization::rotateR(int i, int k, double c, double s, int from) {
   for (int j = from; j < r_.cols(); ++j) {
     const double a = r_(i, j), b = r_(k, j);
     r_(i, j) = c * a + s * b;
     r_(k, j) = -s * a + c * b;
   }
+}
+
+void QrFactorization::rotate(int i, int k, double c, double s, int from) {
+  rotateR(i, k, c, s, from);
   // In place, element by element: no temporary column (for a long iterate a fresh page-mapped
   // allocation per rotation), the same arithmetic.
   double* qi = q_[static_cast<std::size_t>(i)].data();
@@ -41,12 +46,45 @@ void QrFactorization::pushFront(const Eigen::VectorXd& column) {
   if (m > 0) h.block(0, 1, m, m) = r_;
   r_ = std::move(h);
   q_.push_back(rho > 0 ? Eigen::VectorXd(v / rho) : Eigen::VectorXd::Zero(v.size()));
+  std::vector<Rotation> chain;
   for (int i = m; i >= 1; --i) {
     const double a = r_(i - 1, 0), b = r_(i, 0);
     if (b == 0.0) continue;
     const double n = std::hypot(a, b);
-    rotate(i - 1, i, a / n, b / n, 0);
+    rotateR(i - 1, i, a / n, b / n, 0);
+    chain.push_back({i - 1, a / n, b / n});
     r_(i, 0) = 0.0;
+  }
+  rotateQ(chain);
+}
+
+void QrFactorization::rotateQ(const std::vector<Rotation>& chain) {
+  // The rotations (k, k + 1) of one insertion, in their order, applied block by block of rows:
+  // each long column is read and written once instead of once per rotation touching it. Every
+  // element sees the same operations in the same order as rotation by rotation (bit-identical).
+  if (chain.empty()) return;
+  constexpr Eigen::Index kBlock = 256;
+  const Eigen::Index n = q_.front().size();
+  double carry[kBlock];
+  for (Eigen::Index e0 = 0; e0 < n; e0 += kBlock) {
+    const Eigen::Index len = std::min(kBlock, n - e0);
+    int held = -1;  // the column whose new values `carry` holds
+    for (const Rotation& g : chain) {
+      double* qk = q_[static_cast<std::size_t>(g.k)].data() + e0;
+      double* ql = q_[static_cast<std::size_t>(g.k + 1)].data() + e0;
+      if (held != g.k + 1) {
+        if (held >= 0) std::copy(carry, carry + len, q_[static_cast<std::size_t>(held)].data() + e0);
+        std::copy(ql, ql + len, carry);
+      }
+      const double c = g.c, s = g.s;
+      for (Eigen::Index t = 0; t < len; ++t) {
+        const double a = qk[t], b = carry[t];
+        carry[t] = c * a + s * b;
+        ql[t] = -s * a + c * b;
+      }
+      held = g.k;
+    }
+    std::copy(carry, carry + len, q_[static_cast<std::size_t>(held)].data() + e0);
   }
 }
 

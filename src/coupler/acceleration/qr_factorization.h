@@ -36,8 +36,17 @@ class QrFactorization {
   }
 
  private:
+  /// A Givens rotation of rows/columns (k, k + 1) by (c, s).
+  struct Rotation {
+    int k;
+    double c, s;
+  };
   /// Rotates rows (i, k) of R (columns from `from`) and columns (i, k) of Q by (c, s).
   void rotate(int i, int k, double c, double s, int from);
+  /// Rows (i, k) of R only.
+  void rotateR(int i, int k, double c, double s, int from);
+  /// Columns (k, k + 1) of Q by each rotation of `chain` in turn (one pass over the rows).
+  void rotateQ(const std::vector<Rotation>& chain);
   core::Comm comm_;
   std::vector<Eigen::VectorXd> q_;  // orthonormal columns (this rank's rows)
   Eigen::MatrixXd r_;               // upper triangular, cols x cols (the same on every rank)

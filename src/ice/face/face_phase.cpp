@@ -6,7 +6,9 @@
 // (ice.shock_viscosity). p_f enters the momentum and the energy flux form, so q's work is
 // returned as heat by the energy correction (fluids without external materials).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "ice/exchange/face_exchange.h"
 #include "ice/ice_constants.h"
@@ -84,35 +86,50 @@ double shockViscosity(const IceState& st, const int* l, int i, int j, int k, int
   const double rho = 2.0 * dL * dR / (dL + dR);
   return rho * (q1 * c * -du + q2 * du * du);
 }
-// Mixture density, acoustic impedance rho c (Wood) and mass-averaged velocity of a cell.
-struct CellMix {
-  double rho = 0, z = 0, u = 0;
+// Mixture density rho, acoustic impedance z = rho c (Wood) and mass-averaged velocity u_d of
+// every cell of `box` (the owned cells and one layer around them), computed once per cell rather
+// than once per face the cell borders (two faces per direction).
+struct CellMixes {
+  core::Box box;
+  std::vector<double> rho, z;
+  std::array<std::vector<double>, 3> u;
 };
-CellMix cellMix(const IceState& st, const int* c, int d) {
-  double mass = 0, mu = 0, dn = 0, k = 0;
-  for (const MaterialState& m : st.mat) {
-    const double mm = m.mass(c[0], c[1], c[2]);
-    mass += mm;
-    mu += mm * m.vel(c[0], c[1], c[2], d);
-    const double t = m.theta(c[0], c[1], c[2]);
-    if (t > 0) dn += t / m.spvol(c[0], c[1], c[2]), k += t * m.kappa(c[0], c[1], c[2]);
-  }
-  CellMix r;
-  r.rho = dn;
-  r.z = dn > 0 && k > 0 ? std::sqrt(dn / k) : 0.0;
-  r.u = mass > 0 ? mu / mass : 0.0;
-  return r;
+CellMixes cellMixes(const IceState& st, const core::Box& box, int dim) {
+  CellMixes x;
+  x.box = box;
+  const auto n = static_cast<std::size_t>(box.numPts());
+  x.rho.resize(n);
+  x.z.resize(n);
+  for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
+  const core::Box& sb = st.press.box();
+  forEach(box, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    const auto o = static_cast<std::size_t>(box.index(i, j, k));
+    double mass = 0, mu[3] = {0, 0, 0}, dn = 0, kap = 0;
+    for (const MaterialState& m : st.mat) {
+      const double mm = m.mass.data()[c];
+      mass += mm;
+      for (int d = 0; d < dim; ++d) mu[d] += mm * m.vel.data(d)[c];
+      const double t = m.theta.data()[c];
+      if (t > 0) dn += t / m.spvol.data()[c], kap += t * m.kappa.data()[c];
+    }
+    x.rho[o] = dn;
+    x.z[o] = dn > 0 && kap > 0 ? std::sqrt(dn / kap) : 0.0;
+    for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)][o] = mass > 0 ? mu[d] / mass : 0.0;
+  });
+  return x;
 }
 
 // The two-shock approximate Riemann solution's dissipative part (Dukowicz 1985) at a face in
 // compression (du = u_R - u_L < 0): p* = p_avg - W_L W_R / (W_L + W_R) du with the shock
 // impedances W = rho (c + Gamma |du|), Gamma = (gamma + 1) / 2 of an ideal gas of gamma 1.4
 // (kShockImpedanceSlope). Zero at faces in expansion and where the velocity is uniform.
-double riemannDissipation(const IceState& st, const int* l, int i, int j, int k, int d) {
-  const int r[3] = {i, j, k};
-  const CellMix L = cellMix(st, l, d), R = cellMix(st, r, d);
-  const double du = R.u - L.u;
-  return -riemannImpedance(L.z, L.rho, R.z, R.rho, du) * du;
+// L, R: the two cells' indices in x.box.
+double riemannDissipation(const CellMixes& x, std::int64_t L, std::int64_t R, int d) {
+  const std::vector<double>& u = x.u[static_cast<std::size_t>(d)];
+  const auto l = static_cast<std::size_t>(L), r = static_cast<std::size_t>(R);
+  const double du = u[r] - u[l];
+  return -riemannImpedance(x.z[l], x.rho[l], x.z[r], x.rho[r], du) * du;
 }
 }  // namespace
 
@@ -126,19 +143,21 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
                               std::int64_t* cell) {
   const int dim = mesh.dim();
   const core::Box& sb = st.press.box();
+  const CellMixes x = cellMixes(st, owned.grow(1, dim), dim);
+  const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   double rate = 0;
   forEach(owned, [&](int i, int j, int k) {
-    const int c[3] = {i, j, k};
-    double s = 0, rho = 0;
+    const std::int64_t c = x.box.index(i, j, k);
+    const auto C = static_cast<std::size_t>(c);
+    double s = 0;
     for (int d = 0; d < dim; ++d) {
-      int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-      lo[d] -= 1;
-      hi[d] += 1;
-      const CellMix L = cellMix(st, lo, d), C = cellMix(st, c, d), R = cellMix(st, hi, d);
-      rho = C.rho;
-      s += (riemannImpedance(L.z, L.rho, C.z, C.rho, C.u - L.u) + riemannImpedance(C.z, C.rho, R.z, R.rho, R.u - C.u)) /
+      const std::vector<double>& u = x.u[static_cast<std::size_t>(d)];
+      const auto L = static_cast<std::size_t>(c - strides[d]), R = static_cast<std::size_t>(c + strides[d]);
+      s += (riemannImpedance(x.z[L], x.rho[L], x.z[C], x.rho[C], u[C] - u[L]) +
+            riemannImpedance(x.z[C], x.rho[C], x.z[R], x.rho[R], u[R] - u[C])) /
            mesh.dx(d);
     }
+    const double rho = dim > 0 ? x.rho[C] : 0.0;
     s = rho > 0 ? s / rho : 0.0;
     if (s > rate) {
       rate = s;
@@ -150,6 +169,9 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
 
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann) {
   const bool q = q1 > 0 || q2 > 0;
+  CellMixes x;
+  if (riemann) x = cellMixes(st, owned.grow(1, dim), dim);
+  const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   for (int d = 0; d < dim; ++d) {
     forEach(owned.faces(d), [&](int i, int j, int k) {
       int l[3] = {i, j, k};
@@ -162,7 +184,10 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
       const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
       double pf = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
       if (q && rL > 0 && rR > 0) pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
-      if (riemann && rL > 0 && rR > 0) pf += riemannDissipation(st, l, i, j, k, d);
+      if (riemann && rL > 0 && rR > 0) {
+        const std::int64_t R = x.box.index(i, j, k);
+        pf += riemannDissipation(x, R - strides[d], R, d);
+      }
       st.pressFace[d](i, j, k) = pf;
     });
   }

@@ -18,19 +18,21 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
     m.velL = cell(m.name + "/velocity_L", 3);
     m.eintL = cell(m.name + "/internal_energy_L", 1);
     m.spvolL = cell(m.name + "/specific_volume_L", 1, 1.0);
+    // Faces only in the mesh's directions; the exchange increments only where another
+    // participant reads them (external materials): empty fields otherwise.
     for (int d = 0; d < 3; ++d)
-      m.velFace[d] = Field(m.name + "/face_velocity", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
-    m.dMom = Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0);
-    m.dEnergy = Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0);
+      m.velFace[d] = d < dim ? Field(m.name + "/face_velocity", Centering::Cell, owned.faces(d), 1, 0) : Field();
+    m.dMom = m.external ? Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0) : Field();
+    m.dEnergy = m.external ? Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0) : Field();
   }
   press = cell("pressure", 1);
   pressEq = cell("equilibrium_pressure", 1);
   dp = cell("pressure_increment", 1);
   iters = cell("pressure_iterations", 1);
   divU = cell("velocity_divergence", 1);
-  for (int d = 0; d < 3; ++d) {
-    pressFace[d] = Field("face_pressure", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
-    volFlux[d] = Field("face_volume_flux", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
+  for (int d = 0; d < dim; ++d) {
+    pressFace[d] = Field("face_pressure", Centering::Cell, owned.faces(d), 1, 0);
+    volFlux[d] = Field("face_volume_flux", Centering::Cell, owned.faces(d), 1, 0);
   }
 }
 

@@ -33,8 +33,8 @@ struct MaterialState {
   double viscosity = 0, conductivity = 0;
   core::Field mass, vel, eint, spvol, theta, kappa;  // kappa = 1 / (rho^micro c^2)
   core::Field velL, eintL, spvolL;                   // Lagrangian values
-  std::array<core::Field, 3> velFace;                // face velocity normal to each direction
-  core::Field dMom, dEnergy;          // exchange increments (external materials; owned cells)
+  std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
+  core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
 };
 
 struct IceState {
@@ -44,8 +44,8 @@ struct IceState {
   core::Field dp;         // pressure increment
   core::Field iters;      // equilibrium iterations per cell (diagnostic)
   core::Field divU;       // div(sum_r theta_r u_f,r) per cell
-  std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded)
-  std::array<core::Field, 3> pressFace;
+  std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded; empty beyond dim)
+  std::array<core::Field, 3> pressFace;  // empty beyond dim
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`.
   void allocate(const core::Box& owned, const core::Box& stored, int dim);
