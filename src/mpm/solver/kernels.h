@@ -224,35 +224,71 @@ void momentumToGrid(const Src& src, const ParticleSet& p, std::size_t begin, std
   }
 }
 
-/// Internal force -V sigma grad(w) plus body force m g w and particle loads (fext + fsurf) w.
-/// In 1D and 2D the terms with the gradient 0 of a missing direction are left out (exact zeros).
+/// One particle's force on its stencil nodes: internal force -V sigma grad(w) plus body force
+/// m g w and particle loads (fext + fsurf) w. In 1D and 2D the terms with the gradient 0 of a
+/// missing direction are left out (exact zeros).
+template <int Dim>
+struct ParticleForce {
+  double b[3] = {0, 0, 0};
+  double s[6] = {0, 0, 0, 0, 0, 0};  // V sigma
+  ParticleForce(const ParticleSet& p, std::size_t i, const double gravity[3], bool loads) {
+    const double V = p.vol[i];
+    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
+    s[kXX] = V * p.stress[kXX][i];
+    if constexpr (Dim >= 2) {
+      s[kYY] = V * p.stress[kYY][i];
+      s[kXY] = V * p.stress[kXY][i];
+    }
+    if constexpr (Dim == 3) {
+      s[kZZ] = V * p.stress[kZZ][i];
+      s[kYZ] = V * p.stress[kYZ][i];
+      s[kXZ] = V * p.stress[kXZ][i];
+    }
+  }
+  inline void scatter(double* const force[3], std::int64_t n, double w, double gx, double gy, double gz) const {
+    if constexpr (Dim == 1) {
+      force[0][n] += b[0] * w - s[kXX] * gx;
+    } else if constexpr (Dim == 2) {
+      force[0][n] += b[0] * w - (s[kXX] * gx + s[kXY] * gy);
+      force[1][n] += b[1] * w - (s[kXY] * gx + s[kYY] * gy);
+    } else {
+      force[0][n] += b[0] * w - (s[kXX] * gx + s[kXY] * gy + s[kXZ] * gz);
+      force[1][n] += b[1] * w - (s[kXY] * gx + s[kYY] * gy + s[kYZ] * gz);
+      force[2][n] += b[2] * w - (s[kXZ] * gx + s[kYZ] * gy + s[kZZ] * gz);
+    }
+  }
+};
+
+/// Internal, body and load forces to the nodes (ParticleForce).
 template <int Dim, class Src>
 void internalForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
                     const double gravity[3], bool loads, double* const force[3]) {
   for (std::size_t i = begin; i < end; ++i) {
-    const double V = p.vol[i];
-    double b[3];
-    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
-    const double sxx = V * p.stress[kXX][i];
-    if constexpr (Dim == 1) {
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double, double) {
-        force[0][n] += b[0] * w - sxx * gx;
-      });
-    } else if constexpr (Dim == 2) {
-      const double syy = V * p.stress[kYY][i], sxy = V * p.stress[kXY][i];
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double) {
-        force[0][n] += b[0] * w - (sxx * gx + sxy * gy);
-        force[1][n] += b[1] * w - (sxy * gx + syy * gy);
-      });
-    } else {
-      const double syy = V * p.stress[kYY][i], szz = V * p.stress[kZZ][i];
-      const double sxy = V * p.stress[kXY][i], syz = V * p.stress[kYZ][i], sxz = V * p.stress[kXZ][i];
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
-        force[0][n] += b[0] * w - (sxx * gx + sxy * gy + sxz * gz);
-        force[1][n] += b[1] * w - (sxy * gx + syy * gy + syz * gz);
-        force[2][n] += b[2] * w - (sxz * gx + syz * gy + szz * gz);
-      });
-    }
+    const ParticleForce<Dim> pf(p, i, gravity, loads);
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      pf.scatter(force, n, w, gx, gy, gz);
+    });
+  }
+}
+
+/// Particle-to-grid and internal forces in one pass (USL / MUSL, where the stress of the forces is
+/// the one the particles carry into the step): mass, momentum and force of a particle are scattered
+/// from one stencil evaluation, with the operations of particlesToGrid and internalForces in the
+/// same particle order, so every node sum is bit for bit that of the two separate passes.
+template <int Dim, class Src>
+void particlesToGridWithForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end,
+                               const GridGeom& g, double* mass, double* const mom[3], const double gravity[3],
+                               bool loads, double* const force[3]) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const double m = p.mass[i];
+    double mv[3] = {0, 0, 0};
+    for (int d = 0; d < Dim; ++d) mv[d] = m * p.v[d][i];
+    const ParticleForce<Dim> pf(p, i, gravity, loads);
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      mass[n] += m * w;
+      for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
+      pf.scatter(force, n, w, gx, gy, gz);
+    });
   }
 }
 
