@@ -282,7 +282,7 @@ void MpmSolver::scatterToGrid(bool forces) {
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
       stencilRecord_.resize(p_.size() * kernels::StencilCache<S, D>::kRecord);
-      scatter(kernels::StoredStencils<S, D>{p_, {stencilOffset_.data(), stencilRecord_.data()}, {}});
+      scatter(kernels::StoredStencils<S, D>{p_, {stencilOffset_.data(), stencilRecord_.data()}});
       stencilsValid_ = true;
     } else {
       scatter(kernels::EvaluatedStencils<S, D>{p_, {}});
