@@ -33,12 +33,6 @@ void dispatch(ShapeKind k, int dim, F&& f) {
 /// gradients -1/dx and 1/dx: LinearShape::eval's operations); GIMP keeps weights and gradients.
 template <class Shape>
 inline constexpr bool kCompactRecord = std::is_same_v<Shape, LinearShape>;
-/// Shapes whose weights depend on the grid coordinate xi alone (the B-splines): their cache
-/// record is xi per direction, and the weights and gradients are evaluated from it on use, by the
-/// same function from the same value, so bit for bit what was stored before (memory: Dim doubles
-/// per particle instead of 2 Dim N; 2D bspline2 16 B instead of 96 B).
-template <class Shape>
-inline constexpr bool kCoordinateRecord = std::is_same_v<Shape, BSpline2Shape> || std::is_same_v<Shape, BSpline3Shape>;
 
 /// The tensor-product loop over a stencil with first node o0 and per-direction weights w and
 /// gradients dw: f(node offset, weight, grad x, grad y, grad z). In 1D and 2D the missing
@@ -73,15 +67,15 @@ struct Stencil {
   static constexpr int N = Shape::kNodes;
   static constexpr int NY = Dim >= 2 ? N : 1;
   static constexpr int NZ = Dim >= 3 ? N : 1;
-  int base[3] = {0, 0, 0};
-  double w[3][N] = {};
-  double dw[3][N] = {};
-  double xi[3] = {0, 0, 0};  // grid coordinate per direction
+  // Set by compute() (what forNodes and store read); not zero-filled first, as a local per particle.
+  int base[3];
+  double w[3][N];
+  double dw[3][N];
 
   inline void compute(const ParticleSet& p, std::size_t i, const GridGeom& g) {
     for (int d = 0; d < Dim; ++d) {
-      xi[d] = (p.x[d][i] - g.origin[d]) * g.invDx[d];
-      Shape::eval(xi[d], p.halfSize[d][i] * g.invDx[d], base[d], w[d], dw[d]);
+      const double xi = (p.x[d][i] - g.origin[d]) * g.invDx[d];  // grid coordinate
+      Shape::eval(xi, p.halfSize[d][i] * g.invDx[d], base[d], w[d], dw[d]);
       for (int a = 0; a < N; ++a) dw[d][a] *= g.invDx[d];
     }
     for (int d = Dim; d < 3; ++d) {
@@ -102,8 +96,6 @@ struct Stencil {
     offset = g.index(base[0], base[1], base[2]);
     if constexpr (kCompactRecord<Shape>) {
       for (int d = 0; d < Dim; ++d) rec[d] = w[d][1];
-    } else if constexpr (kCoordinateRecord<Shape>) {
-      for (int d = 0; d < Dim; ++d) rec[d] = xi[d];
     } else {
       for (int d = 0; d < Dim; ++d)
         for (int a = 0; a < N; ++a) {
@@ -123,7 +115,7 @@ struct Stencil {
 template <class Shape, int Dim>
 struct StencilCache {
   static constexpr int N = Shape::kNodes;
-  static constexpr int kRecord = kCompactRecord<Shape> || kCoordinateRecord<Shape> ? Dim : 2 * Dim * N;
+  static constexpr int kRecord = kCompactRecord<Shape> ? Dim : 2 * Dim * N;
   std::int64_t* offset;
   double* rec;
 
@@ -139,12 +131,6 @@ struct StencilCache {
         dw[d][0] = -1.0 * g.invDx[d];
         dw[d][1] = 1.0 * g.invDx[d];
       }
-    } else if constexpr (kCoordinateRecord<Shape>) {
-      for (int d = 0; d < Dim; ++d) {
-        int base = 0;
-        Shape::eval(r[d], 0.0, base, w[d], dw[d]);
-        for (int a = 0; a < N; ++a) dw[d][a] *= g.invDx[d];
-      }
     } else {
       for (int d = 0; d < Dim; ++d)
         for (int a = 0; a < N; ++a) {
@@ -157,7 +143,10 @@ struct StencilCache {
 };
 
 /// Stencil sources of the kernels: forNodes(i, g, f) over particle i's stencil.
-/// Evaluated on use (the MPM-ICE operators' extra passes).
+/// Evaluated on use (the B-splines' step passes, the MPM-ICE operators' extra passes). Where the
+/// stencil lives is chosen by instruction count (callgrind, 3 steps of the 2D bench block): here a
+/// member (2D bspline2 USL 1.071e9; as a local of forNodes 1.119e9), in StoredStencils a local
+/// (2D linear 6.53e8; as a member 6.73e8: the node stores of f no longer force its reloads).
 template <class Shape, int Dim>
 struct EvaluatedStencils {
   const ParticleSet& p;
@@ -173,19 +162,22 @@ template <class Shape, int Dim>
 struct StoredStencils {
   const ParticleSet& p;
   StencilCache<Shape, Dim> cache;
-  mutable Stencil<Shape, Dim> s;
   template <class F>
   inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+    Stencil<Shape, Dim> s;
     s.compute(p, i, g);
     s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
     s.forNodes(g, f);
   }
 };
 
-/// Whether the step keeps the stencils of Shape (StencilCache) or evaluates them in each pass
-/// (every shape is cached: fewer instructions than evaluating, measured with callgrind, docs/mpm.md).
+/// Whether the step keeps the stencils of Shape (StencilCache) or evaluates them in each pass.
+/// The B-splines are evaluated again: from the position, by the same function, so bit for bit what
+/// a cache gives, for 0.7 % more instructions than a cache of the grid coordinate in a 2D
+/// bspline2 USL step (callgrind, docs/mpm.md) and 24 B less per 2D particle (offset + record).
+/// The linear hat and GIMP are kept (the hat's record is its fraction: 5.6 % fewer instructions).
 template <class Shape>
-inline constexpr bool kCacheStencils = true;
+inline constexpr bool kCacheStencils = !std::is_same_v<Shape, BSpline2Shape> && !std::is_same_v<Shape, BSpline3Shape>;
 
 /// The stencil source of the passes after the step's particle-to-grid.
 template <class Shape, int Dim>
@@ -224,35 +216,71 @@ void momentumToGrid(const Src& src, const ParticleSet& p, std::size_t begin, std
   }
 }
 
-/// Internal force -V sigma grad(w) plus body force m g w and particle loads (fext + fsurf) w.
-/// In 1D and 2D the terms with the gradient 0 of a missing direction are left out (exact zeros).
+/// One particle's force on its stencil nodes: internal force -V sigma grad(w) plus body force
+/// m g w and particle loads (fext + fsurf) w. In 1D and 2D the terms with the gradient 0 of a
+/// missing direction are left out (exact zeros).
+template <int Dim>
+struct ParticleForce {
+  double b[3] = {0, 0, 0};
+  double s[6] = {0, 0, 0, 0, 0, 0};  // V sigma
+  ParticleForce(const ParticleSet& p, std::size_t i, const double gravity[3], bool loads) {
+    const double V = p.vol[i];
+    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
+    s[kXX] = V * p.stress[kXX][i];
+    if constexpr (Dim >= 2) {
+      s[kYY] = V * p.stress[kYY][i];
+      s[kXY] = V * p.stress[kXY][i];
+    }
+    if constexpr (Dim == 3) {
+      s[kZZ] = V * p.stress[kZZ][i];
+      s[kYZ] = V * p.stress[kYZ][i];
+      s[kXZ] = V * p.stress[kXZ][i];
+    }
+  }
+  inline void scatter(double* const force[3], std::int64_t n, double w, double gx, double gy, double gz) const {
+    if constexpr (Dim == 1) {
+      force[0][n] += b[0] * w - s[kXX] * gx;
+    } else if constexpr (Dim == 2) {
+      force[0][n] += b[0] * w - (s[kXX] * gx + s[kXY] * gy);
+      force[1][n] += b[1] * w - (s[kXY] * gx + s[kYY] * gy);
+    } else {
+      force[0][n] += b[0] * w - (s[kXX] * gx + s[kXY] * gy + s[kXZ] * gz);
+      force[1][n] += b[1] * w - (s[kXY] * gx + s[kYY] * gy + s[kYZ] * gz);
+      force[2][n] += b[2] * w - (s[kXZ] * gx + s[kYZ] * gy + s[kZZ] * gz);
+    }
+  }
+};
+
+/// Internal, body and load forces to the nodes (ParticleForce).
 template <int Dim, class Src>
 void internalForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
                     const double gravity[3], bool loads, double* const force[3]) {
   for (std::size_t i = begin; i < end; ++i) {
-    const double V = p.vol[i];
-    double b[3];
-    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
-    const double sxx = V * p.stress[kXX][i];
-    if constexpr (Dim == 1) {
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double, double) {
-        force[0][n] += b[0] * w - sxx * gx;
-      });
-    } else if constexpr (Dim == 2) {
-      const double syy = V * p.stress[kYY][i], sxy = V * p.stress[kXY][i];
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double) {
-        force[0][n] += b[0] * w - (sxx * gx + sxy * gy);
-        force[1][n] += b[1] * w - (sxy * gx + syy * gy);
-      });
-    } else {
-      const double syy = V * p.stress[kYY][i], szz = V * p.stress[kZZ][i];
-      const double sxy = V * p.stress[kXY][i], syz = V * p.stress[kYZ][i], sxz = V * p.stress[kXZ][i];
-      src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
-        force[0][n] += b[0] * w - (sxx * gx + sxy * gy + sxz * gz);
-        force[1][n] += b[1] * w - (sxy * gx + syy * gy + syz * gz);
-        force[2][n] += b[2] * w - (sxz * gx + syz * gy + szz * gz);
-      });
-    }
+    const ParticleForce<Dim> pf(p, i, gravity, loads);
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      pf.scatter(force, n, w, gx, gy, gz);
+    });
+  }
+}
+
+/// Particle-to-grid and internal forces in one pass (USL / MUSL, where the stress of the forces is
+/// the one the particles carry into the step): mass, momentum and force of a particle are scattered
+/// from one stencil evaluation, with the operations of particlesToGrid and internalForces in the
+/// same particle order, so every node sum is bit for bit that of the two separate passes.
+template <int Dim, class Src>
+void particlesToGridWithForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end,
+                               const GridGeom& g, double* mass, double* const mom[3], const double gravity[3],
+                               bool loads, double* const force[3]) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const double m = p.mass[i];
+    double mv[3] = {0, 0, 0};
+    for (int d = 0; d < Dim; ++d) mv[d] = m * p.v[d][i];
+    const ParticleForce<Dim> pf(p, i, gravity, loads);
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      mass[n] += m * w;
+      for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
+      pf.scatter(force, n, w, gx, gy, gz);
+    });
   }
 }
 

@@ -94,7 +94,8 @@ double MpmSolver::stableTimeStep(std::size_t* limiting) const {
   for (int d = 0; d < mesh.dim(); ++d) dxMin = std::min(dxMin, mesh.dx(d));
   double cmax = 0;
   std::size_t arg = p_.size();
-  for (std::size_t m = 0; m < models_.size(); ++m) {
+  if (!limiting && signalSpeedValid_) cmax = signalSpeed_;
+  for (std::size_t m = 0; m < models_.size() && (limiting || !signalSpeedValid_); ++m) {
     if (!models_[m]) continue;
     const auto [b, e] = p_.materialRange(static_cast<int>(m));
     std::size_t at = e;
@@ -149,8 +150,16 @@ double MpmSolver::advance(double until) {
     throw core::HealthError(collapse_.message(dt, time_, step_ + 1, stableTimeStepLimit()), comm_.root());
   if (time_ + dt > until) dt = until - time_;
   beginStep(dt);
-  particlesToGrid();
-  computeInternalForces();
+  if (scheme_->stressFirst) {
+    particlesToGrid();
+    computeInternalForces();
+  } else {
+    // USL / MUSL: the forces use the stress the particles carry into the step, so they are
+    // scattered in the particle-to-grid pass (kernels::particlesToGridWithForces, same sums).
+    scatterToGrid(true);
+    finishParticlesToGrid();
+    finishInternalForces();
+  }
   updateGrid();
   gridToParticles();
   endStep();
@@ -206,6 +215,7 @@ void MpmSolver::assignArcAreas(int l) {
 void MpmSolver::beginStep(double dt) {
   if (!(dt > 0)) throw std::invalid_argument("MpmSolver::beginStep: dt must be > 0, got " + num(dt));
   dt_ = dt;
+  signalSpeedValid_ = false;
   cells_->newStep();
   grid_->mass.fill(0.0);
   grid_->velocity.fill(0.0);
@@ -250,21 +260,40 @@ void MpmSolver::computeLoads() {
 }
 
 void MpmSolver::particlesToGrid() {
+  scatterToGrid(false);
+  finishParticlesToGrid();
+}
+
+void MpmSolver::scatterToGrid(bool forces) {
   Grid& g = *grid_;
   double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   double* mass = g.mass.data();
+  double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
   const GridGeom geom = g.geom();
+  const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
+  const bool loads = !scene_.loads.empty() || surfaceForces_;
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
+    const auto scatter = [&](const auto& src) {
+      if (forces)
+        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom, grav, loads, f);
+      else
+        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom);
+    };
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
       stencilRecord_.resize(p_.size() * kernels::StencilCache<S, D>::kRecord);
-      const kernels::StoredStencils<S, D> src{p_, {stencilOffset_.data(), stencilRecord_.data()}, {}};
-      kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom);
+      scatter(kernels::StoredStencils<S, D>{p_, {stencilOffset_.data(), stencilRecord_.data()}});
       stencilsValid_ = true;
     } else {
-      kernels::particlesToGrid<D>(kernels::EvaluatedStencils<S, D>{p_, {}}, p_, 0, p_.size(), geom, mass, mom);
+      scatter(kernels::EvaluatedStencils<S, D>{p_, {}});
     }
   });
+}
+
+void MpmSolver::finishParticlesToGrid() {
+  Grid& g = *grid_;
+  double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  double* mass = g.mass.data();
   bcs_.fold(g.mass, Parity::Scalar);
   bcs_.fold(g.velocity, Parity::Vector);
   g.sumAndFill({&g.mass, &g.velocity});
@@ -314,14 +343,26 @@ template <bool kVelocity, bool kMove>
 void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double* const vn[3],
                                          const double* const vGrad[3]) {
   const GridGeom geom = grid_->geom();
+  const int dim = scene_.mesh.dim();
+  double cmax = 0;
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
     forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
       updateDeformation(b, e);
       if (model) model->updateStress(p_, b, e, dt_);
+      // The step's last particle pass (velocity, mass and volume final): the next time step's
+      // signal speed over the block while it is in cache (the max of stableTimeStep's loop).
+      if (kMove && model) {
+        std::size_t at = e;
+        cmax = std::max(cmax, model->maxSignalSpeed(p_, b, e, dim, at));
+      }
     });
   });
-  if (kMove) stencilsValid_ = false;
+  if (kMove) {
+    stencilsValid_ = false;
+    signalSpeed_ = cmax;
+    signalSpeedValid_ = true;
+  }
 }
 
 void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
@@ -376,6 +417,11 @@ void MpmSolver::computeInternalForces() {
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
     kernels::internalForces<D>(src, p_, 0, p_.size(), geom, grav, loads, f);
   });
+  finishInternalForces();
+}
+
+void MpmSolver::finishInternalForces() {
+  Grid& g = *grid_;
   bcs_.fold(g.force, Parity::Vector);
   g.sumAndFill({&g.force});
 }

@@ -52,6 +52,7 @@ class MpmSolver {
   /// Writable particles: the step's cached stencils are recomputed before their next use.
   [[nodiscard]] ParticleSet& particles() {
     stencilsValid_ = false;
+    signalSpeedValid_ = false;
     return p_;
   }
   [[nodiscard]] const ParticleSet& particles() const { return p_; }
@@ -123,6 +124,7 @@ class MpmSolver {
   [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_}; }
   void restore(const Checkpoint& c) {
     stencilsValid_ = false;
+    signalSpeedValid_ = false;
     p_ = c.particles;
     time_ = c.time;
     step_ = c.step;
@@ -145,6 +147,11 @@ class MpmSolver {
   double stableTimeStep(std::size_t* limiting) const;
   void computeLoads();
   void assignArcAreas(int load);
+  /// The particle pass of particlesToGrid() (filling the stencil cache), with the internal forces
+  /// of computeInternalForces() in the same pass when `forces`; then the grid work of each.
+  void scatterToGrid(bool forces);
+  void finishParticlesToGrid();
+  void finishInternalForces();
   /// F = (I + dt L) F and V = V0 det F of particles [begin, end).
   void updateDeformation(std::size_t begin, std::size_t end);
   /// Calls f(begin, end, model) over this rank's particles in blocks of kBlock within each
@@ -186,6 +193,11 @@ class MpmSolver {
   std::vector<std::int64_t> stencilOffset_;
   std::vector<double> stencilRecord_;
   bool stencilsValid_ = false;
+  // The largest CFL signal speed of this rank's particles, taken in the step's last particle pass
+  // (USL / MUSL) and used by the next stableTimeStep(); stale once the particles are written from
+  // outside or a step begins.
+  double signalSpeed_ = 0;
+  bool signalSpeedValid_ = false;
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;

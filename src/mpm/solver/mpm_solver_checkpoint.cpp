@@ -24,6 +24,7 @@ void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
                                 std::to_string(buf.size()) + " values, not a multiple of the " + std::to_string(w) +
                                 " per particle of this program");
   stencilsValid_ = false;
+  signalSpeedValid_ = false;
   p_.resize(0);
   p_.reserve(buf.size() / w);
   for (std::size_t k = 0; k < buf.size(); k += w) p_.unpack(buf.data() + k);
