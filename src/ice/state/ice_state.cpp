@@ -22,6 +22,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
       m.velFace[d] = Field(m.name + "/face_velocity", Centering::Cell, d < dim ? owned.faces(d) : owned, 1, 0);
     m.dMom = Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0);
     m.dEnergy = Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0);
+    m.couplingWork = Field(m.name + "/coupling_work", Centering::Cell, owned, 1, 0);
   }
   press = cell("pressure", 1);
   pressEq = cell("equilibrium_pressure", 1);

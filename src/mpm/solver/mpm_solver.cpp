@@ -77,7 +77,42 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
   cells_ = std::make_unique<NodeCellOperators>(scene_, decomp_.cellBox(comm_.rank()), *grid_, bcs_, p_, shape_,
                                                massFloor_);
+  nodeWeight_.assign(static_cast<std::size_t>(grid_->numNodes()), 0.0);
+  {
+    const GridGeom geom = grid_->geom();
+    core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+      forCellNodes(mesh, i, j, k, [&](int ni, int nj, int nk, double share) {
+        nodeWeight_[static_cast<std::size_t>(geom.index(ni, nj, nk))] += share;
+      });
+    });
+  }
   migrateAndSort(true);
+}
+
+double MpmSolver::nodeKinetic(const Field& v) const {
+  const double* m = grid_->mass.data();
+  double e = 0;
+  for (std::int64_t k = 0; k < grid_->numNodes(); ++k) {
+    const double w = nodeWeight_[static_cast<std::size_t>(k)];
+    if (w == 0.0) continue;
+    double v2 = 0;
+    for (int d = 0; d < 3; ++d) v2 += v.data(d)[k] * v.data(d)[k];
+    e += w * 0.5 * m[k] * v2;
+  }
+  return e;
+}
+
+double MpmSolver::particleKinetic() const {
+  double e = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    e += 0.5 * p_.mass[i] * (p_.v[0][i] * p_.v[0][i] + p_.v[1][i] * p_.v[1][i] + p_.v[2][i] * p_.v[2][i]);
+  return e;
+}
+
+double MpmSolver::particleWork() const {
+  double e = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += p_.work[i];
+  return e;
 }
 
 MpmSolver::~MpmSolver() = default;
@@ -251,6 +286,8 @@ void MpmSolver::computeLoads() {
 
 void MpmSolver::particlesToGrid() {
   Grid& g = *grid_;
+  ledger_.keParticles = particleKinetic();
+  ledger_.work = particleWork();
   double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   double* mass = g.mass.data();
   const GridGeom geom = g.geom();
@@ -276,6 +313,7 @@ void MpmSolver::particlesToGrid() {
     for (int d = 0; d < dim; ++d) mom[d][k] *= inv;
   }
   applyBC(g.velocity);
+  ledger_.keNodes = nodeKinetic(g.velocity);
 }
 
 template <class F>
@@ -396,10 +434,34 @@ void MpmSolver::updateGrid() {
       vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
   }
   applyBC(g.velocityL);
+  // The work of the coupling forces, as the update realised it (a constrained component moves
+  // neither at n nor at L, so it does none): the kinetic energy the coupler must take from the
+  // fluid (NodeCellOperators::cellCouplingWork).
+  // The ledger: the nodes' kinetic energy change less the coupling and damping work is the
+  // internal forces' (with the walls' constraints), to be met by the particles' stress work.
+  double* w = g.externalWork.data();
+  double wext = 0, wdamp = 0;
+  for (std::int64_t k = 0; k < n; ++k) {
+    double s = 0, sd = 0;
+    if (m[k] > accelFloor_)
+      for (int d = 0; d < dim; ++d) {
+        const double vbar = 0.5 * (g.velocity.data(d)[k] + g.velocityL.data(d)[k]);
+        s += g.externalForce.data(d)[k] * vbar;
+        sd -= c * m[k] * g.velocity.data(d)[k] * vbar;
+      }
+    w[k] = dt * s;
+    const double nw = nodeWeight_[static_cast<std::size_t>(k)];
+    wext += nw * w[k];
+    wdamp += nw * dt * sd;
+  }
+  ledger_.damping += wdamp;
+  ledger_.integration += nodeKinetic(g.velocityL) - ledger_.keNodes - wext - wdamp;
 }
 
 void MpmSolver::gridToParticles() {
   Grid& g = *grid_;
+  // The grid's kinetic energy now (after any coupling increments) against the particles' after.
+  const double keFinal = nodeKinetic(g.velocityL);
   const double* vL[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
   const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   const GridGeom geom = g.geom();
@@ -433,6 +495,9 @@ void MpmSolver::gridToParticles() {
       break;
     }
   }
+  const double keParticles = particleKinetic();
+  ledger_.transfer += (ledger_.keNodes - ledger_.keParticles) + (keParticles - keFinal);
+  ledger_.integration += particleWork() - ledger_.work;
 }
 
 void MpmSolver::endStep() {
@@ -550,8 +615,20 @@ Energies MpmSolver::energies() const {
                  (p_.v[0][i] * p_.v[0][i] + p_.v[1][i] * p_.v[1][i] + p_.v[2][i] * p_.v[2][i]);
     e.strain += p_.work[i];
   }
-  e.kinetic = comm_.sum(e.kinetic);
-  e.strain = comm_.sum(e.strain);
+  for (std::size_t m = 0; m < models_.size(); ++m) {
+    if (!models_[m]) continue;
+    const double cv = scene_.materials[m].specific_heat;
+    const auto [b, en] = p_.materialRange(static_cast<int>(m));
+    for (std::size_t i = b; i < en; ++i) e.heat += p_.mass[i] * cv * p_.temperature[i];
+  }
+  std::vector<double> s{e.kinetic, e.strain, e.heat, ledger_.transfer, ledger_.integration, ledger_.damping};
+  comm_.sumInPlace(s);
+  e.kinetic = s[0];
+  e.strain = s[1];
+  e.heat = s[2];
+  e.transfer = s[3];
+  e.integration = s[4];
+  e.damping = s[5];
   return e;
 }
 

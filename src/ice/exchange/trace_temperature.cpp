@@ -1,0 +1,62 @@
+// IceSolver phase 10, last part (coupled runs): the temperature of a fluid dispersed in a solid
+// follows the solid's. In a cell the solid fills, the fluid is a trace (volume fraction ~1e-10,
+// or the little gas advection leaves behind a moving surface): its heat capacity is negligible
+// and its Lagrangian phase is not physical. It takes the share kappa_f / kbar of the cell's volume
+// change (up to 1 / theta_f), capped at +-50 % a step, doing p dV work at the cell pressure, and
+// the next equilibrium pressure gives it its volume back without work: a ratchet that pumps it
+// to 1e9 K in a few hundred steps wherever the solid moves or rings (the piston's copper, the
+// cylinder's wall at K = 0; docs/verification-coupled.md "The piston"). A fluid that is a real
+// phase of the cell (a mixed cell at the surface) must keep its own adiabat.
+// What separates the two is the share of the cell's compliance each carries: the solids carry
+// w = sum_s theta_s kappa_s / kbar (the fraction of a volume change of the cell the solids take).
+// Where w ~ 1 the cell's mechanics are the solid's and the fluid is embedded in it; where w ~ 0
+// the fluid is the cell's compliance. The crossover is at theta_f ~ kappa_s / kappa_f (p / K_s,
+// 1e-6 for air against copper), so a gas fraction of 1e-3 keeps its own temperature to 1e-3 and a
+// trace of 1e-10 follows the solid's to 1e-4. So each fluid's temperature moves by the fraction w
+// of the way to the solids' (their heat-capacity-weighted temperature); the heat comes from the
+// solids in proportion to their heat capacities (for a trace, ~1e-13 of theirs), so energy is
+// conserved, and the solids' part goes to their solver with the exchange increments (dEnergy).
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+void IceSolver::relaxEmbeddedFluidTemperatures() {
+  if (!anyExternal_) return;
+  const core::Box& sb = st_.press.box();
+  forEach(owned_, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    double kbar = 0, ks = 0, Cs = 0, CsTs = 0;
+    for (const MaterialState& m : st_.mat) {
+      const double tk = m.theta.data()[c] * m.kappa.data()[c];
+      kbar += tk;
+      if (!m.external || !(m.mass.data()[c] > 0)) continue;
+      ks += tk;
+      const double C = m.mass.data()[c] * m.eos->cv();
+      Cs += C;
+      CsTs += C * m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]);
+    }
+    if (!(Cs > 0) || !(kbar > 0)) return;
+    const double w = ks / kbar, Ts = CsTs / Cs;
+    double Q = 0;  // heat [J] the fluids take from the solids
+    for (MaterialState& m : st_.mat) {
+      const double mass = m.mass.data()[c];
+      if (m.external || !(mass > 0)) continue;
+      double& e = m.eintL.data()[c];
+      const double de = w * m.eos->cv() * (Ts - m.eos->temperature(1.0 / m.spvolL.data()[c], e));
+      e += de;
+      Q += mass * de;
+    }
+    if (Q == 0.0) return;
+    for (MaterialState& m : st_.mat) {
+      const double mass = m.mass.data()[c];
+      if (!m.external || !(mass > 0)) continue;
+      const double share = -Q * mass * m.eos->cv() / Cs;  // [J]
+      m.eintL.data()[c] += share / mass;
+      m.dEnergy(i, j, k) += share;
+    }
+  });
+}
+
+}  // namespace mpmice::ice
