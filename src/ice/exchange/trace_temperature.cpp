@@ -12,10 +12,15 @@
 // Where w ~ 1 the cell's mechanics are the solid's and the fluid is embedded in it; where w ~ 0
 // the fluid is the cell's compliance. The crossover is at theta_f ~ kappa_s / kappa_f (p / K_s,
 // 1e-6 for air against copper), so a gas fraction of 1e-3 keeps its own temperature to 1e-3 and a
-// trace of 1e-10 follows the solid's to 1e-4. So each fluid's temperature moves by the fraction w
-// of the way to the solids' (their heat-capacity-weighted temperature); the heat comes from the
-// solids in proportion to their heat capacities (for a trace, ~1e-13 of theirs), so energy is
-// conserved, and the solids' part goes to their solver with the exchange increments (dEnergy).
+// trace of 1e-10 follows the solid's to 1e-4. So each fluid's temperature change in this step
+// becomes the fraction w of the solids' change (their heat-capacity-weighted one, from the start
+// of the step to now) plus (1 - w) of its own: a trace follows the solids' adiabat, a real phase
+// keeps its own. The change, not the temperature: without heat exchange (ice.exchange.heat 0) a
+// trace keeps its offset from the solid's temperature, and drag heat shared at one temperature
+// rise stays one temperature rise (IceExchange.DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace).
+// The heat comes from the solids in proportion to their heat capacities (for a trace, ~1e-13 of
+// theirs), so energy is conserved, and the solids' part goes to their solver with the exchange
+// increments (dEnergy).
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -27,7 +32,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
   const core::Box& sb = st_.press.box();
   forEach(owned_, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
-    double kbar = 0, ks = 0, Cs = 0, CsTs = 0;
+    double kbar = 0, ks = 0, Cs = 0, CsdTs = 0;
     for (const MaterialState& m : st_.mat) {
       const double tk = m.theta.data()[c] * m.kappa.data()[c];
       kbar += tk;
@@ -35,16 +40,19 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       ks += tk;
       const double C = m.mass.data()[c] * m.eos->cv();
       Cs += C;
-      CsTs += C * m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]);
+      CsdTs += C * (m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]) -
+                    m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]));
     }
     if (!(Cs > 0) || !(kbar > 0)) return;
-    const double w = ks / kbar, Ts = CsTs / Cs;
+    const double w = ks / kbar, dTs = CsdTs / Cs;
     double Q = 0;  // heat [J] the fluids take from the solids
     for (MaterialState& m : st_.mat) {
       const double mass = m.mass.data()[c];
       if (m.external || !(mass > 0)) continue;
       double& e = m.eintL.data()[c];
-      const double de = w * m.eos->cv() * (Ts - m.eos->temperature(1.0 / m.spvolL.data()[c], e));
+      const double dTown = m.eos->temperature(1.0 / m.spvolL.data()[c], e) -
+                           m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]);
+      const double de = w * m.eos->cv() * (dTs - dTown);
       e += de;
       Q += mass * de;
     }

@@ -310,16 +310,13 @@ void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
     nodeEnergy_ = Field("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
     if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
   }
-  // 0. A cell that holds particles of m warms them by one temperature rise dE / (m_cell cv).
-  cellMass_.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
-  auto slot = [&](const std::array<int, 3>& c) { return static_cast<std::size_t>(cells_.index(c[0], c[1], c[2])); };
-  for (std::size_t i = b; i < e; ++i) cellMass_[slot(cellOfParticle(mesh_, p_, i, cells_))] += p_.mass[i];
-  for (std::size_t i = b; i < e; ++i) {
-    const auto c = cellOfParticle(mesh_, p_, i, cells_);
-    const double m = cellMass_[slot(c)];
-    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
-  }
-  // The others (the smeared cells around the surface) hand their energy on through their nodes.
+  // Every cell's energy goes by the transpose of the node-to-cell average that made the cell mass
+  // ICE saw: to its corner nodes in proportion to share x (their particle mass of m), and from a
+  // node to its particles in proportion to m_p w_ip. So every joule reaches a particle, and a
+  // particle's temperature change is a weighted mean of its cells' (E_c / (m_c cv)), never more:
+  // dividing a cell's energy by the mass of the particles inside it instead sent a particle that
+  // carries a small part of a smeared cell's mass many times its cell's change (the added-mass
+  // slab's rubber at -640 K in step 1, the seed cylinder's wall at -0.03 K at K = 0).
   // 1. The particles' mass at each node, m_p w_ip summed as they are (no mirror images): the
   //    weights of the deposit below, so that a node hands out exactly what it received.
   Field& mw = nodeScratch_;
@@ -336,10 +333,10 @@ void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
     }
   });
   g.sumAndFill({&mw});
-  // 2. Each such cell's energy to its corner nodes in proportion to their share of that mass.
+  // 2. Each cell's energy to its corner nodes in proportion to their share of that mass.
   core::forEach(cells_, [&](int i, int j, int k) {
     const double E = energy(i, j, k);
-    if (E == 0.0 || cellMass_[static_cast<std::size_t>(cells_.index(i, j, k))] > 0) return;
+    if (E == 0.0) return;
     double mc = 0;
     forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) { mc += share * mw(ni, nj, nk, 0); });
     if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)

@@ -16,8 +16,8 @@
 ///   cellCouplingWork(m, out)        the work the coupling forces did on the nodes, per cell
 ///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes; the
 ///                                   kinetic energy the nodes did not take (kineticDeficit(m))
-///   addCellEnergy(m, E)             heat to the particles of each cell; a cell without particles
-///                                   hands it on through its nodes (every joule reaches a particle)
+///   addCellEnergy(m, E)             heat to the particles, by the transpose of the node-to-cell
+///                                   average (every joule reaches a particle, none gets more)
 ///
 /// Per-step data: cellState(m) and the node masses behind it carry the step generation they were
 /// computed in (newStep() starts a generation: MpmSolver::beginStep calls it). Every operator that
@@ -132,12 +132,11 @@ class NodeCellOperators {
   /// mesh nodes. Collective.
   void cellToParticles(const core::Field& cellValue, double offset, std::vector<double>& out);
   /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to its
-  /// particles: a cell that holds particles of m warms them by one temperature rise
-  /// dE / (m_cell cv). The cell mass ICE sees is smeared over the cells around the solid's
-  /// surface, and a cell there may hold none: its energy goes by the transpose of the node-to-cell
-  /// average, to its corner nodes in proportion to their particle mass of m and from a node to its
-  /// particles in proportion to m_p w_ip, so no energy is lost (it was, when such a cell's energy
-  /// was dropped). Collective.
+  /// particles by the transpose of the node-to-cell average that made ICE's cell mass: to its
+  /// corner nodes in proportion to their particle mass of m, from a node to its particles in
+  /// proportion to m_p w_ip. No energy is lost (a cell without particles of its own still hands
+  /// it on) and a particle's temperature change is a weighted mean of its cells' dE / (m_c cv),
+  /// never more (the cell mass ICE sees is smeared over the surface cells). Collective.
   void addCellEnergy(int material, const core::Field& energy);
 
  private:
@@ -163,7 +162,6 @@ class NodeCellOperators {
   core::Field nodeValue_;                      // cellToParticles() node value and weight
   std::vector<double> particlePressure_;       // addCellPressureStress() scratch
   core::Field nodeScratch_, nodeEnergy_;       // applyCellMomentumIncrement(), addCellEnergy() scratch
-  std::vector<double> cellMass_;               // addCellEnergy() scratch
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
 };
 

@@ -178,6 +178,9 @@ class MpmSolver {
   void withStencils(F&& f);
   void migrateAndSort(bool forceSort);
   void applyBC(core::Field& v) const { bcs_.apply(v); }
+  /// Adds each particle's stress work of this step, as the grid update realised it, to its work
+  /// (end of updateGrid).
+  void addStressWork();
   /// This rank's share of sum_nodes 1/2 m |v|^2 (each mesh node counted once over all ranks).
   [[nodiscard]] double nodeKinetic(const core::Field& v) const;
   /// This rank's particles: kinetic energy and stress work.
