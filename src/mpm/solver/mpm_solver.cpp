@@ -468,17 +468,19 @@ void MpmSolver::addStressWork() {
   // m (v_L^2 - v_n^2) / 2 = dt f . v_mean), so the stored (elastic + plastic) energy and the
   // kinetic energy exchange it without a truncation error; the models' own midpoint stress power
   // (sigma_n + sigma_n+1) / 2 : D(v_L) differs from it by O(dt^2) a step (docs/coupling.md
-  // "Energy budget"). What is left in mpm_stress_integration is the nodes below the acceleration
-  // floor (they do not move) and the body forces' work.
+  // "Energy budget"). Nodes below the acceleration floor do not move and take no work. What is left
+  // in mpm_stress_integration is the body forces' work.
   Grid& g = *grid_;
   const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   const double* vl[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
+  const double* mass = g.mass.data();
   const GridGeom geom = g.geom();
-  const double dt = dt_;
+  const double dt = dt_, floor = accelFloor_;
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
     for (std::size_t i = 0; i < p_.size(); ++i) {
       double L[3][3] = {};
       src.forNodes(i, geom, [&](std::int64_t n, double, double gx, double gy, double gz) {
+        if (!(mass[n] > floor)) return;  // a node below the floor does not move: no work done on it
         const double gr[3] = {gx, gy, gz};
         for (int a = 0; a < D; ++a) {
           const double vm = 0.5 * (vn[a][n] + vl[a][n]);
