@@ -79,6 +79,7 @@ void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
       p.eqps[i] = e0 + dl;
     }
     const Sym3 n = {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
+    p.work[i] += stressWork(s, n, t.D, p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

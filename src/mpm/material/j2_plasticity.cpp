@@ -95,6 +95,7 @@ void J2Plasticity::updateStress(ParticleSet& p, std::size_t begin, std::size_t e
       }
       n = {dev[0] + pm, dev[1] + pm, dev[2] + pm, dev[3], dev[4], dev[5]};
     }
+    p.work[i] += stressWork(s, n, D, p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

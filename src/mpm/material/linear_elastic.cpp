@@ -17,6 +17,7 @@ void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
     const double lt = lam * trace(D);
     Sym3 n;
     for (int k = 0; k < 6; ++k) n[k] = s[k] + dt * (twoG * D[k] + (k < 3 ? lt : 0.0) + spin[k]);
+    p.work[i] += stressWork(s, n, D, p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

@@ -6,7 +6,8 @@
 
 namespace mpmice::mpm {
 
-void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double /*dt*/) const {
+void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end,
+                              double dt) const {
   const double lam = c_.lambda(), G = c_.G;
   for (std::size_t i = begin; i < end; ++i) {
     const Mat3 F = loadMat(p.F, i);
@@ -20,6 +21,8 @@ void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end
     const Sym3 n = {G * invJ * (bij(0, 0) - 1.0) + pr, G * invJ * (bij(1, 1) - 1.0) + pr,
                     G * invJ * (bij(2, 2) - 1.0) + pr, G * invJ * bij(0, 1),
                     G * invJ * bij(1, 2), G * invJ * bij(0, 2)};
+    const Sym3 s = loadStress(p, i);
+    p.work[i] += stressWork(s, n, symPart(loadMat(p.L, i)), p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

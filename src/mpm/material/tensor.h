@@ -80,5 +80,11 @@ inline ElasticTrial elasticTrial(const Mat3& L, const Sym3& s, double K, double 
   }
   return t;
 }
+/// Stress work of one particle over a step, midpoint rule: V (s_old + s_new)/2 : D dt.
+inline double stressWork(const Sym3& sOld, const Sym3& sNew, const Sym3& D, double vol, double dt) {
+  Sym3 m;
+  for (int k = 0; k < 6; ++k) m[k] = 0.5 * (sOld[k] + sNew[k]);
+  return vol * ddot(m, D) * dt;
+}
 
 }  // namespace mpmice::mpm

@@ -36,6 +36,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   scheme_ = &parseUpdateScheme(scene_.mpm.update);
   flip_ = scene_.mpm.flip;
   damping_ = scene_.mpm.damping;
+  gridStressWork_ = scene_.mpm.stress_work == "grid";
   // 2. Decomposition, grid, boundary conditions.
   decomp_ = core::Decomposition(mesh, comm_.size());
   // B-splines (and GIMP within lp of a face) deposit on the node layer outside the mesh: on
@@ -356,7 +357,11 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
     forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
       updateDeformation(b, e);
-      if (model) model->updateStress(p_, b, e, dt_);
+      if (!model) return;
+      if (gridStressWork_) workScratch_.assign(p_.work.begin() + b, p_.work.begin() + e);
+      model->updateStress(p_, b, e, dt_);
+      // mpm.stress_work grid: the work is the grid's (addStressWork), the model's is dropped.
+      if (gridStressWork_) std::copy(workScratch_.begin(), workScratch_.end(), p_.work.begin() + b);
     });
   });
   if (kMove) stencilsValid_ = false;
@@ -456,7 +461,7 @@ void MpmSolver::updateGrid() {
   }
   ledger_.damping += wdamp;
   ledger_.integration += nodeKinetic(g.velocityL) - ledger_.keNodes - wext - wdamp;
-  addStressWork();
+  if (gridStressWork_) addStressWork();
 }
 
 void MpmSolver::addStressWork() {

@@ -121,6 +121,11 @@ class MpmSolver {
   /// From now on the particle column fsurf (force per particle, held from step to step until the
   /// coupler changes it) enters the internal force pass like a load.
   void enableSurfaceForces() { surfaceForces_ = true; }
+  /// Makes mpm.stress_work "auto" mean "grid" (the volume coupling's solid side calls it before
+  /// the first step).
+  void useGridStressWorkByDefault() {
+    if (scene_.mpm.stress_work == "auto") gridStressWork_ = true;
+  }
 
   // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
   /// This rank's sums of Energies::transfer, integration, damping, and the step's partial sums.
@@ -211,6 +216,8 @@ class MpmSolver {
   std::vector<double> stencilRecord_;
   bool stencilsValid_ = false;
   Ledger ledger_;
+  bool gridStressWork_ = false;     // mpm.stress_work: grid (addStressWork) or material (the models)
+  std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
   std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;

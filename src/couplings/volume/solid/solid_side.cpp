@@ -3,6 +3,7 @@
 namespace mpmice::coupler {
 
 SolidSide::SolidSide(mpm::MpmSolver& mpm) : mpm_(mpm) {
+  mpm_.useGridStressWorkByDefault();  // mpm.stress_work auto: the energy budget closes
   const core::Box owned = mpm.decomposition().cellBox(mpm.comm().rank());
   for (int m : mpm.scene().solids()) fields_.emplace_back(m, mpm.scene().materials[m].name, owned);
 }
