@@ -29,9 +29,9 @@ print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
 # M = 8900 x 0.4 kg/m^2 (for a constant v, p = p0 (h0 / (h0 - v t))^gamma). At t = 20 ms:
 # displacement 0.19639 m, v = 9.443 m/s, p = 260.78 kPa, p_L = 38.89 kPa.
 # Measured (docs/verification-coupled.md, tests/verification/coupled/test_piston.cpp): the
-# displacement within 0.2 %, the trapped gas's pressure within 4.2 % of p(t) (1.4 % to t = 13 ms; not the 1 % asked:
-# the gas advected into the piston's surface cells, see the docs); finer meshes stop with a
-# non-physical trace-gas temperature after about one cell of travel.
+# displacement within 0.2 %, the trapped gas's pressure within 4.0 % of p(t) at 25 cells (1.3 % to
+# t = 10 ms; not the 1 % asked: the gas advected across the piston's surface cells, see the docs);
+# 4.9 and 7.4 % at 50 and 100 cells.
 #
 # Check it:  coupler check configs/piston.yaml
 # Run it:    mpmice configs/piston.yaml

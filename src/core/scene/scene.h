@@ -170,6 +170,11 @@ struct MpmOptions {
   double flip = 1.0;                       // 1 = FLIP, 0 = PIC
   double damping = 0;                      // velocity-proportional damping [1/s]
   bool sort_particles = true;
+  // The stress work each particle accumulates (the solid's internal energy): "material" (the
+  // models' midpoint stress power), "grid" (the work its internal force did on the nodes: the
+  // coupled energy budget closes to round-off) or "auto" (grid in a volume-coupled run, material
+  // otherwise). docs/mpm.md "Stress work".
+  std::string stress_work = "auto";
   bool operator==(const MpmOptions&) const = default;
 };
 

@@ -519,7 +519,7 @@ class SchemaReader {
   // ----------------------------------------------------------------------- solver options
   void readMpm(const YamlValue& v) {
     const YamlMap m = v.map();
-    m.allow({"shape_function", "update", "flip", "damping", "sort_particles"});
+    m.allow({"shape_function", "update", "flip", "damping", "sort_particles", "stress_work"});
     MpmOptions& o = s_.mpm;
     o.shape_function = m.choice("shape_function", o.shape_function, {"linear", "gimp", "bspline2", "bspline3"},
                                 "shape function");
@@ -527,6 +527,7 @@ class SchemaReader {
     o.flip = m.number("flip", o.flip, Range::closed(0, 1));                 // 1 = FLIP, 0 = PIC
     o.damping = m.number("damping", o.damping, Range::nonNegative());       // [1/s]
     o.sort_particles = m.boolean("sort_particles", o.sort_particles);
+    o.stress_work = m.choice("stress_work", o.stress_work, {"auto", "material", "grid"}, "stress work");
   }
 
   void readIce(const YamlValue& v) {

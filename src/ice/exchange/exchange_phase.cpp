@@ -7,8 +7,15 @@
 // (mass ~1e-10 of the cell's) would take all of it, +|du|^2/2 per unit mass each step, and its
 // specific volume, hence du = dt v grad p, grows with its temperature: a runaway (the seed
 // cylinder's wall, docs/coupling.md). Uintah's exchange converts none of D to internal energy.
-// The increments of external materials are kept for the coupler.
+// The increments of external materials are kept for the coupler (their energy adds to their share
+// of the Lagrangian phase's energy correction). With solids, the fluids' Lagrangian kinetic energy
+// is paid in the Lagrangian phase and, in a cell with a solid, the correction is shared by heat
+// capacity there (lagrangian_phase.cpp), so the gas a solid's pressure jump accelerates and the
+// drag stops neither gains nor loses net energy (docs/coupling.md "Energy budget").
+#include <algorithm>
+
 #include "ice/exchange/pointwise_exchange.h"
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -21,10 +28,12 @@ void IceSolver::exchange() {
   const double V = mesh_.cellVolume();
   const double dtV = dt_ * V;
   for (MaterialState& m : st_.mat) {
-    m.dMom.fill(0.0);
-    m.dEnergy.fill(0.0);
+    m.dMom.fill(0.0);  // dEnergy holds the Lagrangian phase's share already; the heat is added
   }
-  if (nm < 2 || (!anyK_ && !anyH_)) return;
+  if (nm < 2 || (!anyK_ && !anyH_)) {
+    relaxEmbeddedFluidTemperatures();
+    return;
+  }
   struct Ptr {
     const double *m, *th, *vL;
     double *uL[3], *eL, *dMom[3], *dE;
@@ -36,7 +45,8 @@ void IceSolver::exchange() {
     MaterialState& m = st_.mat[r];
     ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(),
               {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
-              {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(), m.eos->cv(), m.external};
+              {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(),
+              m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
   forEach(owned_, [&](int i, int j, int k) {
@@ -71,7 +81,7 @@ void IceSolver::exchange() {
           if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
         }
         Q.eL[c] += de;
-        if (Q.external) Q.dE[o] = mass[r] * de;
+        if (Q.external) Q.dE[o] += mass[r] * de;
       }
     }
     if (anyH_) {
@@ -89,6 +99,7 @@ void IceSolver::exchange() {
       }
     }
   });
+  relaxEmbeddedFluidTemperatures();
 }
 
 }  // namespace mpmice::ice

@@ -325,6 +325,14 @@ void IceSolver::setExternalLagrangianEnergy(int material, std::span<const double
   });
 }
 
+void IceSolver::setExternalCouplingWork(int material, std::span<const double> work) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (work.size() != n) throw std::invalid_argument("ice: external coupling work has the wrong size");
+  forEach(owned_, [&](int i, int j, int k) { m.couplingWork(i, j, k) = work[static_cast<std::size_t>(owned_.index(i, j, k))]; });
+}
+
 Field IceSolver::pressureForce(int material) const {
   const MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
   Field f(m.name + "/pressure_force", core::Centering::Cell, owned_, 3, 0);
@@ -355,10 +363,12 @@ Totals IceSolver::totals() const {
       }
       t.mass += mass;
       t.energy += mass * (m.eint(i, j, k) + 0.5 * ke);
+      t.kinetic += 0.5 * mass * ke;
     });
   }
   t.mass = comm_.sum(t.mass);
   t.energy = comm_.sum(t.energy);
+  t.kinetic = comm_.sum(t.kinetic);
   for (int d = 0; d < 3; ++d) t.momentum[d] = comm_.sum(t.momentum[d]);
   return t;
 }

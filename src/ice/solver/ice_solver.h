@@ -35,6 +35,7 @@ namespace mpmice::ice {
 
 struct Totals {
   double mass = 0, energy = 0;          // energy = internal + kinetic (fluids)
+  double kinetic = 0;                   // of the fluids
   std::array<double, 3> momentum{0, 0, 0};
 };
 
@@ -78,8 +79,18 @@ class IceSolver {
   /// Solid's Lagrangian momentum [kg m/s] (3 x owned cells) and internal energy [J] per cell.
   void setExternalLagrangianMomentum(int material, std::span<const double> momentum);
   void setExternalLagrangianEnergy(int material, std::span<const double> energy);
+  /// The work [J] per owned cell that the pressure forces of this step do on external material m,
+  /// as its own solver realises it (MPM: the kinetic energy its nodes gain from them). Before
+  /// computeSourcesAndLagrangian: the fluids' energy change there is the flux form of the cell's
+  /// p dV work less this work (energy conservation with external materials). Zero unless set.
+  void setExternalCouplingWork(int material, std::span<const double> work);
   void exchange();
-  /// Exchange increments of momentum [kg m/s] (3 comps) and internal energy [J] per owned cell.
+  /// The end of exchange() with solids: each fluid's temperature moves the fraction of the cell's
+  /// compliance the solids carry towards theirs (src/ice/exchange/trace_temperature.cpp).
+  void relaxEmbeddedFluidTemperatures();
+  /// Exchange increments of momentum [kg m/s] (3 comps) and internal energy [J] per owned cell
+  /// (the energy: exchange heat, and the external material's share of the Lagrangian phase's
+  /// energy correction).
   [[nodiscard]] const core::Field& exchangeMomentum(int material) const { return st_.mat[material].dMom; }
   [[nodiscard]] const core::Field& exchangeEnergy(int material) const { return st_.mat[material].dEnergy; }
   void advectFluids();

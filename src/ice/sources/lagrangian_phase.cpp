@@ -2,10 +2,15 @@
 // and the specific volume evolution.
 //   u_L = u - dt v_r grad(p_f) + dt g (+ viscous),      e_L = e - dt p v_r (kappa_r / kbar) div U
 //   v_L = v (1 + dt (kappa_r / kbar) div U),            U = sum_s theta_s u_f,s
-// Without external materials the fluids' total energy is made conservative: the mismatch between
-// the flux form -dt sum_faces A p_f U_f and the kinetic plus internal changes above (a truncation
-// error) is given to the materials in proportion to theta_r kappa_r, so closed boxes keep their
-// total energy to round-off. Energy sources add power * theta * V * dt to their material.
+// The total energy is made conservative: the mismatch between the flux form -dt sum_faces A p_f U_f
+// (the p dV work of every material in the cell, U summed over all of them) and what the materials
+// take (the fluids' kinetic plus internal changes above, and for an external material (a solid)
+// the work its own solver says the pressure forces did on it: setExternalCouplingWork) is a
+// truncation error; it is given to the materials in proportion to theta_r kappa_r (fluids alone)
+// or to their heat capacities m_r cv_r (a cell with a solid), an external material's share as
+// energy to its solver (dEnergy, with the exchange heat). So closed boxes keep
+// their total energy to round-off, with solids or without. Energy sources add
+// power * theta * V * dt to their material.
 #include <algorithm>
 #include <cmath>
 
@@ -21,18 +26,21 @@ void IceSolver::computeSourcesAndLagrangian() {
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
   const double dt = dt_;
-  const bool fix = !anyExternal_;
+  for (MaterialState& m : st_.mat) m.dEnergy.fill(0.0);  // an external share is added below
   const core::Box& sb = st_.press.box();
   struct Ptr {
     const double *th, *ka, *v, *m, *u[3], *e;
     double *uL[3], *eL, *vL;
+    double cv;
+    bool external;
+    MaterialState* state;
   };
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(),
               {m.vel.data(0), m.vel.data(1), m.vel.data(2)}, m.eint.data(),
-              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data()};
+              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m};
   }
   const double* press = st_.press.data();
   const double* divU = st_.divU.data();
@@ -49,12 +57,12 @@ void IceSolver::computeSourcesAndLagrangian() {
       const std::int64_t fl = fb.index(i, j, k), fh = fb.index(i + (d == 0), j + (d == 1), k + (d == 2));
       const double pfl = st_.pressFace[d].data()[fl], pfh = st_.pressFace[d].data()[fh];
       gp[d] = (pfh - pfl) / mesh_.dx(d);
-      if (fix) {
+      {
         const double* U = st_.volFlux[d].data();
         dEflux -= dt * V * (pfh * U[fh] - pfl * U[fl]) / mesh_.dx(d);
       }
     }
-    double dKE = 0, dIE = 0;
+    double dKE = 0, dIE = 0, dWork = 0;
     for (int r = 0; r < nm; ++r) {
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
@@ -78,15 +86,39 @@ void IceSolver::computeSourcesAndLagrangian() {
       const double de = -p * v * dvv;
       P.eL[c] = P.e[c] + de;
       P.vL[c] = v * (1.0 + dvv);
+      if (P.external) {  // its energy change is its own solver's: the work the forces did on it
+        dWork += P.state->couplingWork(i, j, k);
+        continue;
+      }
       dKE += 0.5 * mass * (ke1 - ke0);
       dIE += mass * de;
     }
-    if (fix && kbar > 0) {
-      const double D = dEflux - dKE - dIE;
+    if (kbar > 0) {
+      const double D = dEflux - dKE - dIE - dWork;
+      // Fluids alone: in proportion to theta_r kappa_r (their share of the volume change). With a
+      // solid in the cell: in proportion to the heat capacities m_r cv_r (one temperature rise for
+      // the cell, as the drag heat), since theta_r kappa_r / kbar puts ~kappa_f / kappa_s of it
+      // on a trace of fluid whose mass is ~1e-10 of the cell's: +1e9 K within steps. The gas at a
+      // solid's surface that the pressure jump accelerates is paid for by the cell and stopped by
+      // the drag, whose heat is shared the same way: no net energy moves into or out of it.
+      double C = 0;
+      bool solid = false;
+      for (const Ptr& P : ptr) {
+        C += P.m[c] * P.cv;
+        solid = solid || (P.external && P.m[c] > 0);
+      }
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
+        const double share = (solid ? P.m[c] * P.cv / C : P.th[c] * P.ka[c] / kbar) * D;  // [J]
+        if (P.external) {
+          if (P.m[c] > 0) {
+            P.eL[c] += share / P.m[c];
+            P.state->dEnergy(i, j, k) += share;
+          }
+          continue;
+        }
         const double e0 = P.eL[c];
-        const double e1 = e0 + (P.ka[c] / kbar) * P.v[c] * D / V;
+        const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
         if (e0 > 0 && e1 < kMinEnergyShare * e0) {  // would drain the internal energy: keep e0
           ++fallbacks_;
           audit_.add(P.m[c] * (e0 - e1), c, r);  // the share of D not taken (audited)

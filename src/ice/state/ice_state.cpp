@@ -24,6 +24,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
       m.velFace[d] = d < dim ? Field(m.name + "/face_velocity", Centering::Cell, owned.faces(d), 1, 0) : Field();
     m.dMom = m.external ? Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0) : Field();
     m.dEnergy = m.external ? Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0) : Field();
+    m.couplingWork = m.external ? Field(m.name + "/coupling_work", Centering::Cell, owned, 1, 0) : Field();
   }
   press = cell("pressure", 1);
   pressEq = cell("equilibrium_pressure", 1);

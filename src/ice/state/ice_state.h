@@ -35,6 +35,7 @@ struct MaterialState {
   core::Field velL, eintL, spvolL;                   // Lagrangian values
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
   core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
+  core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)
 };
 
 struct IceState {

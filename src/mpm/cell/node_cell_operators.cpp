@@ -24,7 +24,8 @@ NodeCellOperators::NodeCellOperators(const core::Scene& scene, const core::Box& 
       massFloor_(massFloor),
       pRef_(kReferencePressure),
       states_(scene.materials.size()),
-      nodeMass_(scene.materials.size()) {
+      nodeMass_(scene.materials.size()),
+      deficit_(scene.materials.size()) {
   const std::vector<int> solids = scene.solids();
   if (!solids.empty()) pRef_ = scene.materials[solids.front()].eos.get("threshold_pressure", kReferencePressure);
 }
@@ -136,6 +137,21 @@ void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) const {
   });
 }
 
+void NodeCellOperators::cellCouplingWork(int material, Field& out) const {
+  current(material, "cellCouplingWork");
+  const Field& nm = nodeMass_[material];
+  const Field& gm = grid_.mass;
+  const Field& w = grid_.externalWork;
+  core::forEach(cells_, [&](int i, int j, int k) {
+    double W = 0;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      const double m = gm(ni, nj, nk);
+      if (m > 0) W += share * nm(ni, nj, nk) / m * w(ni, nj, nk);
+    });
+    out(i, j, k) = W;
+  });
+}
+
 void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv) {
   current(material, "applyCellVelocityIncrement");
   const Field& nm = nodeMass_[material];
@@ -162,11 +178,42 @@ void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv
 void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp) {
   const SolidCellState& cs = current(material, "applyCellMomentumIncrement");
   if (dv_.npts() == 0) dv_ = Field("dv", Centering::Cell, cells_, 3, 0);
+  if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, grid_.box(), 3, Grid::kGhost);
+  Field& def = deficit_.at(material);
+  if (def.npts() == 0) def = Field("kinetic_deficit", Centering::Cell, cells_, 1, 0);
+  const Field& nm = nodeMass_[material];
+  const Field& vL = grid_.velocityL;
+  const int dim = mesh_.dim();
+  // What the cell gains at its Lagrangian velocity (ICE's exchange counts this).
   core::forEach(cells_, [&](int i, int j, int k) {
     const double m = cs.mass(i, j, k);
-    for (int d = 0; d < 3; ++d) dv_(i, j, k, d) = m > 0 ? dp(i, j, k, d) / m : 0.0;
+    double p[3] = {0, 0, 0};
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      for (int d = 0; d < dim; ++d) p[d] += share * nm(ni, nj, nk) * vL(ni, nj, nk, d);
+    });
+    double gain = 0;
+    for (int d = 0; d < 3; ++d) {
+      dv_(i, j, k, d) = m > 0 ? dp(i, j, k, d) / m : 0.0;
+      if (m > 0 && d < dim) gain += dp(i, j, k, d) * (p[d] / m + 0.5 * dv_(i, j, k, d));
+    }
+    def(i, j, k) = gain;
   });
+  nodeScratch_.copyRegion(vL, vL.box(), vL.box());
   applyCellVelocityIncrement(material, dv_);
+  // Less what the nodes gained: each node's kinetic energy change, node-to-cell averaged.
+  const Field& gm = grid_.mass;
+  core::forEach(cells_, [&](int i, int j, int k) {
+    double got = 0;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      double dk = 0;
+      for (int d = 0; d < dim; ++d) {
+        const double a = nodeScratch_(ni, nj, nk, d), b = vL(ni, nj, nk, d);
+        dk += (b - a) * (b + a);
+      }
+      got += share * 0.5 * gm(ni, nj, nk) * dk;
+    });
+    def(i, j, k) -= got;
+  });
 }
 
 void NodeCellOperators::addCellForce(int material, const Field& force) {
@@ -258,14 +305,60 @@ void NodeCellOperators::addRemapToExternalForce() {
 void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
   const double cv = scene_.materials.at(material).specific_heat;
   const auto [b, e] = p_.materialRange(material);
-  cellMass_.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
-  auto slot = [&](const std::array<int, 3>& c) { return static_cast<std::size_t>(cells_.index(c[0], c[1], c[2])); };
-  for (std::size_t i = b; i < e; ++i) cellMass_[slot(cellOfParticle(mesh_, p_, i, cells_))] += p_.mass[i];
-  for (std::size_t i = b; i < e; ++i) {
-    const auto c = cellOfParticle(mesh_, p_, i, cells_);
-    const double m = cellMass_[slot(c)];
-    if (m > 0) p_.temperature[i] += energy(c[0], c[1], c[2]) / (m * cv);
+  Grid& g = grid_;
+  if (nodeEnergy_.npts() == 0) {
+    nodeEnergy_ = Field("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
+    if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
   }
+  // Every cell's energy goes by the transpose of the node-to-cell average that made the cell mass
+  // ICE saw: to its corner nodes in proportion to share x (their particle mass of m), and from a
+  // node to its particles in proportion to m_p w_ip. So every joule reaches a particle, and a
+  // particle's temperature change is a weighted mean of its cells' (E_c / (m_c cv)), never more:
+  // dividing a cell's energy by the mass of the particles inside it instead sent a particle that
+  // carries a small part of a smeared cell's mass many times its cell's change (the added-mass
+  // slab's rubber at -640 K in step 1, the seed cylinder's wall at -0.03 K at K = 0).
+  // 1. The particles' mass at each node, m_p w_ip summed as they are (no mirror images): the
+  //    weights of the deposit below, so that a node hands out exactly what it received.
+  Field& mw = nodeScratch_;
+  mw.fill(0.0);
+  nodeEnergy_.fill(0.0);
+  const GridGeom geom = g.geom();
+  kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    double* w = mw.data(0);
+    for (std::size_t i = b; i < e; ++i) {
+      st.compute(p_, i, geom);
+      const double m = p_.mass[i];
+      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) { w[k] += m * wk; });
+    }
+  });
+  g.sumAndFill({&mw});
+  // 2. Each cell's energy to its corner nodes in proportion to their share of that mass.
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const double E = energy(i, j, k);
+    if (E == 0.0) return;
+    double mc = 0;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) { mc += share * mw(ni, nj, nk, 0); });
+    if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      nodeEnergy_(ni, nj, nk) += E * share * mw(ni, nj, nk, 0) / mc;
+    });
+  });
+  g.sumAndFill({&nodeEnergy_});
+  // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i.
+  kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    const double* w = mw.data(0);
+    const double* en = nodeEnergy_.data();
+    for (std::size_t i = b; i < e; ++i) {
+      st.compute(p_, i, geom);
+      double q = 0;  // energy per unit mass of the particle
+      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
+        if (w[k] > 0) q += wk * en[k] / w[k];
+      });
+      p_.temperature[i] += q / cv;
+    }
+  });
 }
 
 }  // namespace mpmice::mpm

@@ -13,8 +13,11 @@
 ///   addCellForce(m, F)              the transpose of the node-to-cell average: a cell force to
 ///                                   the nodes in proportion to their mass of m
 ///   cellLagrangianMomentum(m, out)  the node-to-cell average of m v_L
-///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes
-///   addCellEnergy(m, E)             the exchange heat to the particles of each cell
+///   cellCouplingWork(m, out)        the work the coupling forces did on the nodes, per cell
+///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes; the
+///                                   kinetic energy the nodes did not take (kineticDeficit(m))
+///   addCellEnergy(m, E)             heat to the particles, by the transpose of the node-to-cell
+///                                   average (every joule reaches a particle, none gets more)
 ///
 /// Per-step data: cellState(m) and the node masses behind it carry the step generation they were
 /// computed in (newStep() starts a generation: MpmSolver::beginStep calls it). Every operator that
@@ -93,12 +96,23 @@ class NodeCellOperators {
   /// Per-cell Lagrangian momentum of material m: the node-to-cell average of m_node v_L (after the
   /// grid update; needs cellState(m) this step).
   void cellLagrangianMomentum(int material, core::Field& out) const;
+  /// Per-cell work [J] of the coupling forces (the grid's externalForce) on the nodes in this
+  /// step's grid update (Grid::externalWork), node-to-cell averaged and shared among the solids in
+  /// proportion to their node mass: sums over the cells to the nodes' total (after updateGrid).
+  void cellCouplingWork(int material, core::Field& out) const;
   /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity
   /// (the transpose of the node-to-cell average, weighted by the node mass of m). Collective.
   void applyCellVelocityIncrement(int material, const core::Field& dv);
   /// The same for per-cell momentum increments [kg m/s] (ICE's exchange momentum): divided by the
   /// cell mass of m (0 where it is absent), then applyCellVelocityIncrement. Collective.
   void applyCellMomentumIncrement(int material, const core::Field& dp);
+  /// Per cell [J], after applyCellMomentumIncrement(m): the kinetic energy a cell of m gains from
+  /// its increment dp at its Lagrangian velocity u_L (dp . u_L + |dp|^2 / (2 m): what ICE's
+  /// exchange counts) less what the nodes gained (node-to-cell average of the node kinetic
+  /// energy change). The nodes take a smoothed increment (each node the mass-weighted mean of its
+  /// cells'), and walls stop constrained components, so they take less: the solid gets the
+  /// difference as heat (addCellEnergy), and the step stays conservative.
+  [[nodiscard]] const core::Field& kineticDeficit(int material) const { return deficit_.at(material); }
   /// Adds per-cell forces on material m (owned cells, 3 components) to the external node force,
   /// shared among each cell's corner nodes in proportion to their mass of m (the transpose of the
   /// node-to-cell average; the total force is kept). After cellState(m). Collective.
@@ -118,7 +132,11 @@ class NodeCellOperators {
   /// mesh nodes. Collective.
   void cellToParticles(const core::Field& cellValue, double offset, std::vector<double>& out);
   /// Adds per-cell internal energy [J] of material m (owned cells; e.g. ICE's exchange heat) to its
-  /// particles in each cell: one temperature rise dE / (m_cell cv) for all of them. Local.
+  /// particles by the transpose of the node-to-cell average that made ICE's cell mass: to its
+  /// corner nodes in proportion to their particle mass of m, from a node to its particles in
+  /// proportion to m_p w_ip. No energy is lost (a cell without particles of its own still hands
+  /// it on) and a particle's temperature change is a weighted mean of its cells' dE / (m_c cv),
+  /// never more (the cell mass ICE sees is smeared over the surface cells). Collective.
   void addCellEnergy(int material, const core::Field& energy);
 
  private:
@@ -143,7 +161,8 @@ class NodeCellOperators {
   core::Field dv_;                             // applyCellMomentumIncrement() scratch
   core::Field nodeValue_;                      // cellToParticles() node value and weight
   std::vector<double> particlePressure_;       // addCellPressureStress() scratch
-  std::vector<double> cellMass_;               // addCellEnergy() scratch
+  core::Field nodeScratch_, nodeEnergy_;       // applyCellMomentumIncrement(), addCellEnergy() scratch
+  std::vector<core::Field> deficit_;           // per material: kineticDeficit()
 };
 
 }  // namespace mpmice::mpm

@@ -14,6 +14,7 @@ Grid::Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exter
   force = Field("force", Centering::Node, b, 3, kGhost);
   externalForce = Field("externalForce", Centering::Node, b, 3, kGhost);
   remap = Field("remap", Centering::Node, b, 3, kGhost);
+  externalWork = Field("externalWork", Centering::Node, b, 1, kGhost);
   geom_.lo = b.lo;
   geom_.sy = b.length(0);
   geom_.sz = std::int64_t(b.length(0)) * b.length(1);

@@ -5,7 +5,7 @@
 /// Node fields (core::Field, three components for vectors whatever the dimension): mass,
 /// velocity (particle-to-grid velocity v_n), velocityL (Lagrangian velocity after the grid
 /// update), force (internal + body + loads), externalForce (the coupler's hook: e.g. ICE's
-/// pressure force, added in the grid update) and remap (MUSL's remapped velocity). The ghost
+/// pressure force, added in the grid update), externalWork (the work that force did) and remap (MUSL's remapped velocity). The ghost
 /// layer reaches one node beyond the mesh at its faces, so B-splines need no special stencil; with
 /// `exteriorGhosts` (the B-spline shapes) that exterior layer belongs to the rank at the face and
 /// is summed across ranks like any owned node (GhostExchange's ownExterior).
@@ -44,6 +44,9 @@ class Grid {
   void fill(const std::vector<core::Field*>& fs) const;
 
   core::Field mass, velocity, velocityL, force, externalForce, remap;
+  /// Work of externalForce in this step's grid update [J]: dt f_ext . (v_n + v_L) / 2 where the
+  /// node accelerates (exactly the kinetic energy the coupling forces gave the node).
+  core::Field externalWork;
 
  private:
   GridGeom geom_;

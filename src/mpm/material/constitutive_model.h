@@ -5,7 +5,9 @@
 /// Virtual dispatch happens once per material per step, never per particle. Before the call the
 /// solver has set each particle's velocity gradient L (for this step), its new deformation
 /// gradient F = (I + dt L) F_old and its new volume V = V0 det F. A model updates the Cauchy
-/// stress (and its history: plastic strain, failure) and adds the step's stress work to `work`.
+/// stress (and its history: plastic strain, failure) and adds the step's stress work to `work`
+/// (midpoint rule; with mpm.stress_work grid the solver replaces it by the work the particle's
+/// internal force did on the nodes, MpmSolver::addStressWork).
 ///
 /// Scene names: linear_elastic, neo_hookean, j2_plasticity, cowper_symonds (j2_plasticity.h),
 /// crushable_foam (parameters: see each header).

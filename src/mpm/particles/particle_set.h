@@ -30,7 +30,7 @@ class ParticleSet {
   Col mass, vol0, vol, temperature;
   Col eqps;                       // equivalent plastic strain
   Col failed;                     // 1 once the failure strain was reached
-  Col work;                       // stress work per particle (strain + dissipated energy) [J]
+  Col work;                       // stress work per particle (strain + dissipated energy) [J] (mpm.stress_work)
   Col loadArea;                   // surface area a load acts on (0: volume / particle size)
   std::array<Col, 9> F;           // deformation gradient, row-major
   std::array<Col, 9> L;           // velocity gradient of the current step, row-major

@@ -36,6 +36,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   scheme_ = &parseUpdateScheme(scene_.mpm.update);
   flip_ = scene_.mpm.flip;
   damping_ = scene_.mpm.damping;
+  gridStressWork_ = scene_.mpm.stress_work == "grid";
   // 2. Decomposition, grid, boundary conditions.
   decomp_ = core::Decomposition(mesh, comm_.size());
   // B-splines (and GIMP within lp of a face) deposit on the node layer outside the mesh: on
@@ -77,7 +78,42 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
   cells_ = std::make_unique<NodeCellOperators>(scene_, decomp_.cellBox(comm_.rank()), *grid_, bcs_, p_, shape_,
                                                massFloor_);
+  nodeWeight_.assign(static_cast<std::size_t>(grid_->numNodes()), 0.0);
+  {
+    const GridGeom geom = grid_->geom();
+    core::forEach(decomp_.cellBox(comm_.rank()), [&](int i, int j, int k) {
+      forCellNodes(mesh, i, j, k, [&](int ni, int nj, int nk, double share) {
+        nodeWeight_[static_cast<std::size_t>(geom.index(ni, nj, nk))] += share;
+      });
+    });
+  }
   migrateAndSort(true);
+}
+
+double MpmSolver::nodeKinetic(const Field& v) const {
+  const double* m = grid_->mass.data();
+  double e = 0;
+  for (std::int64_t k = 0; k < grid_->numNodes(); ++k) {
+    const double w = nodeWeight_[static_cast<std::size_t>(k)];
+    if (w == 0.0) continue;
+    double v2 = 0;
+    for (int d = 0; d < 3; ++d) v2 += v.data(d)[k] * v.data(d)[k];
+    e += w * 0.5 * m[k] * v2;
+  }
+  return e;
+}
+
+double MpmSolver::particleKinetic() const {
+  double e = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    e += 0.5 * p_.mass[i] * (p_.v[0][i] * p_.v[0][i] + p_.v[1][i] * p_.v[1][i] + p_.v[2][i] * p_.v[2][i]);
+  return e;
+}
+
+double MpmSolver::particleWork() const {
+  double e = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += p_.work[i];
+  return e;
 }
 
 MpmSolver::~MpmSolver() = default;
@@ -266,6 +302,8 @@ void MpmSolver::particlesToGrid() {
 
 void MpmSolver::scatterToGrid(bool forces) {
   Grid& g = *grid_;
+  ledger_.keParticles = particleKinetic();
+  ledger_.work = particleWork();
   double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   double* mass = g.mass.data();
   double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
@@ -305,6 +343,7 @@ void MpmSolver::finishParticlesToGrid() {
     for (int d = 0; d < dim; ++d) mom[d][k] *= inv;
   }
   applyBC(g.velocity);
+  ledger_.keNodes = nodeKinetic(g.velocity);
 }
 
 template <class F>
@@ -349,10 +388,14 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
     forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
       updateDeformation(b, e);
-      if (model) model->updateStress(p_, b, e, dt_);
+      if (!model) return;
+      if (gridStressWork_) workScratch_.assign(p_.work.begin() + b, p_.work.begin() + e);
+      model->updateStress(p_, b, e, dt_);
+      // mpm.stress_work grid: the work is the grid's (addStressWork), the model's is dropped.
+      if (gridStressWork_) std::copy(workScratch_.begin(), workScratch_.end(), p_.work.begin() + b);
       // The step's last particle pass (velocity, mass and volume final): the next time step's
       // signal speed over the block while it is in cache (the max of stableTimeStep's loop).
-      if (kMove && model) {
+      if (kMove) {
         std::size_t at = e;
         cmax = std::max(cmax, model->maxSignalSpeed(p_, b, e, dim, at));
       }
@@ -442,10 +485,71 @@ void MpmSolver::updateGrid() {
       vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
   }
   applyBC(g.velocityL);
+  // The work of the coupling forces, as the update realised it (a constrained component moves
+  // neither at n nor at L, so it does none): the kinetic energy the coupler must take from the
+  // fluid (NodeCellOperators::cellCouplingWork).
+  // The ledger: the nodes' kinetic energy change less the coupling and damping work is the
+  // internal forces' (with the walls' constraints), to be met by the particles' stress work.
+  double* w = g.externalWork.data();
+  double wext = 0, wdamp = 0;
+  for (std::int64_t k = 0; k < n; ++k) {
+    double s = 0, sd = 0;
+    if (m[k] > accelFloor_)
+      for (int d = 0; d < dim; ++d) {
+        const double vbar = 0.5 * (g.velocity.data(d)[k] + g.velocityL.data(d)[k]);
+        s += g.externalForce.data(d)[k] * vbar;
+        sd -= c * m[k] * g.velocity.data(d)[k] * vbar;
+      }
+    w[k] = dt * s;
+    const double nw = nodeWeight_[static_cast<std::size_t>(k)];
+    wext += nw * w[k];
+    wdamp += nw * dt * sd;
+  }
+  ledger_.damping += wdamp;
+  ledger_.integration += nodeKinetic(g.velocityL) - ledger_.keNodes - wext - wdamp;
+  if (gridStressWork_) addStressWork();
+}
+
+void MpmSolver::addStressWork() {
+  // The work of each particle's stress in this step as the grid update realised it: the force the
+  // particle put on node i, -V_p sigma_p grad w_ip (the stress and volume computeInternalForces
+  // used, unchanged until gridToParticles in every scheme), times the node's mean velocity
+  // (v_n + v_L) / 2: dW_p = dt V_p sigma_p : grad(v_mean)_p. Summed over the particles it is the
+  // kinetic energy the internal forces gave the nodes (the energy update of the grid is exact:
+  // m (v_L^2 - v_n^2) / 2 = dt f . v_mean), so the stored (elastic + plastic) energy and the
+  // kinetic energy exchange it without a truncation error; the models' own midpoint stress power
+  // (sigma_n + sigma_n+1) / 2 : D(v_L) differs from it by O(dt^2) a step (docs/coupling.md
+  // "Energy budget"). Nodes below the acceleration floor do not move and take no work. What is left
+  // in mpm_stress_integration is the body forces' work.
+  Grid& g = *grid_;
+  const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  const double* vl[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
+  const double* mass = g.mass.data();
+  const GridGeom geom = g.geom();
+  const double dt = dt_, floor = accelFloor_;
+  withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      double L[3][3] = {};
+      src.forNodes(i, geom, [&](std::int64_t n, double, double gx, double gy, double gz) {
+        if (!(mass[n] > floor)) return;  // a node below the floor does not move: no work done on it
+        const double gr[3] = {gx, gy, gz};
+        for (int a = 0; a < D; ++a) {
+          const double vm = 0.5 * (vn[a][n] + vl[a][n]);
+          for (int b = 0; b < D; ++b) L[a][b] += vm * gr[b];
+        }
+      });
+      const double power = p_.stress[kXX][i] * L[0][0] + p_.stress[kYY][i] * L[1][1] +
+                           p_.stress[kZZ][i] * L[2][2] + p_.stress[kXY][i] * (L[0][1] + L[1][0]) +
+                           p_.stress[kYZ][i] * (L[1][2] + L[2][1]) + p_.stress[kXZ][i] * (L[0][2] + L[2][0]);
+      p_.work[i] += dt * p_.vol[i] * power;
+    }
+  });
 }
 
 void MpmSolver::gridToParticles() {
   Grid& g = *grid_;
+  // The grid's kinetic energy now (after any coupling increments) against the particles' after.
+  const double keFinal = nodeKinetic(g.velocityL);
   const double* vL[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
   const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   const GridGeom geom = g.geom();
@@ -479,6 +583,9 @@ void MpmSolver::gridToParticles() {
       break;
     }
   }
+  const double keParticles = particleKinetic();
+  ledger_.transfer += (ledger_.keNodes - ledger_.keParticles) + (keParticles - keFinal);
+  ledger_.integration += particleWork() - ledger_.work;
 }
 
 void MpmSolver::endStep() {
@@ -596,8 +703,20 @@ Energies MpmSolver::energies() const {
                  (p_.v[0][i] * p_.v[0][i] + p_.v[1][i] * p_.v[1][i] + p_.v[2][i] * p_.v[2][i]);
     e.strain += p_.work[i];
   }
-  e.kinetic = comm_.sum(e.kinetic);
-  e.strain = comm_.sum(e.strain);
+  for (std::size_t m = 0; m < models_.size(); ++m) {
+    if (!models_[m]) continue;
+    const double cv = scene_.materials[m].specific_heat;
+    const auto [b, en] = p_.materialRange(static_cast<int>(m));
+    for (std::size_t i = b; i < en; ++i) e.heat += p_.mass[i] * cv * p_.temperature[i];
+  }
+  std::vector<double> s{e.kinetic, e.strain, e.heat, ledger_.transfer, ledger_.integration, ledger_.damping};
+  comm_.sumInPlace(s);
+  e.kinetic = s[0];
+  e.strain = s[1];
+  e.heat = s[2];
+  e.transfer = s[3];
+  e.integration = s[4];
+  e.damping = s[5];
   return e;
 }
 

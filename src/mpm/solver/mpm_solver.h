@@ -35,7 +35,16 @@ namespace mpmice::mpm {
 struct Energies {
   double kinetic = 0;  // sum 1/2 m v^2
   double strain = 0;   // stress work (stored elastic + dissipated plastic)
+  double heat = 0;     // sum m cv T of the particles (thermal energy; the coupling's heat arrives here)
+  // What the method itself creates (> 0) or removes (< 0), summed over the steps so far [J]: the
+  // particle-grid transfers (particle kinetic energy change beyond the grid's: P2G loses, FLIP's
+  // G2P may give back), the stress integration (the kinetic energy the internal forces give the
+  // nodes plus the stress work of the particles: zero for an exact time integration; wall
+  // constraints included) and mpm.damping's work.
+  double transfer = 0, integration = 0, damping = 0;
   double total() const { return kinetic + strain; }
+  /// kinetic + strain + heat less what the method created: constant in a closed system.
+  double balance() const { return kinetic + strain + heat - transfer - integration - damping; }
 };
 
 class MpmSolver {
@@ -113,21 +122,33 @@ class MpmSolver {
   /// From now on the particle column fsurf (force per particle, held from step to step until the
   /// coupler changes it) enters the internal force pass like a load.
   void enableSurfaceForces() { surfaceForces_ = true; }
+  /// Makes mpm.stress_work "auto" mean "grid" (the volume coupling's solid side calls it before
+  /// the first step).
+  void useGridStressWorkByDefault() {
+    if (scene_.mpm.stress_work == "auto") gridStressWork_ = true;
+  }
 
   // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
+  /// This rank's sums of Energies::transfer, integration, damping, and the step's partial sums.
+  struct Ledger {
+    double transfer = 0, integration = 0, damping = 0;
+    double keParticles = 0, work = 0, keNodes = 0;  // at the start of the step, after P2G
+  };
   struct Checkpoint {
     ParticleSet particles;
     double time = 0;
     long step = 0;
+    Ledger ledger;
   };
-  /// The state a step starts from (particles and clock); restore() returns to it. Local.
-  [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_}; }
+  /// The state a step starts from (particles, clock, energy ledger); restore() returns to it. Local.
+  [[nodiscard]] Checkpoint checkpoint() const { return {p_, time_, step_, ledger_}; }
   void restore(const Checkpoint& c) {
     stencilsValid_ = false;
     signalSpeedValid_ = false;
     p_ = c.particles;
     time_ = c.time;
     step_ = c.step;
+    ledger_ = c.ledger;
   }
 
   // ---- restart (mpm_solver_checkpoint.cpp) ------------------------------------------------------
@@ -169,6 +190,14 @@ class MpmSolver {
   void withStencils(F&& f);
   void migrateAndSort(bool forceSort);
   void applyBC(core::Field& v) const { bcs_.apply(v); }
+  /// Adds each particle's stress work of this step, as the grid update realised it, to its work
+  /// (end of updateGrid).
+  void addStressWork();
+  /// This rank's share of sum_nodes 1/2 m |v|^2 (each mesh node counted once over all ranks).
+  [[nodiscard]] double nodeKinetic(const core::Field& v) const;
+  /// This rank's particles: kinetic energy and stress work.
+  [[nodiscard]] double particleKinetic() const;
+  [[nodiscard]] double particleWork() const;
 
   core::Scene scene_;
   core::Comm comm_;
@@ -198,6 +227,10 @@ class MpmSolver {
   // outside or a step begins.
   double signalSpeed_ = 0;
   bool signalSpeedValid_ = false;
+  Ledger ledger_;
+  bool gridStressWork_ = false;     // mpm.stress_work: grid (addStressWork) or material (the models)
+  std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
+  std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;

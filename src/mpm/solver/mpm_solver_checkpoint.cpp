@@ -14,6 +14,8 @@ void MpmSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   for (std::size_t i = 0; i < p_.size(); ++i) p_.pack(i, buf);
   data.put(prefix + ".particles", std::move(buf));
   data.put(prefix + ".clock", std::vector<double>{time_, static_cast<double>(step_), dt_, collapse_.first()});
+  data.put(prefix + ".energy_ledger", std::vector<double>{ledger_.transfer, ledger_.integration, ledger_.damping,
+                                                          ledger_.keParticles, ledger_.work, ledger_.keNodes});
 }
 
 void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
@@ -39,6 +41,11 @@ void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
   step_ = static_cast<long>(clock[1]);
   dt_ = clock[2];
   collapse_.resumeFirst(clock[3]);
+  const auto& ledger = data.get(prefix + ".energy_ledger");
+  if (ledger.size() != 6)
+    throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".energy_ledger' has " +
+                                std::to_string(ledger.size()) + " values, expected 6");
+  ledger_ = {ledger[0], ledger[1], ledger[2], ledger[3], ledger[4], ledger[5]};
 }
 
 }  // namespace mpmice::mpm

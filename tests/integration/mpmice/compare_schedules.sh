@@ -18,4 +18,6 @@ grep -q "schedule: $schedule" "$work/alt/scene.yaml" || { echo "FAIL: could not 
 (cd "$work/alt" && "$bin/coupler/mpmice" scene.yaml) > "$work/alt.log" 2>&1 || { cat "$work/alt.log"; echo "FAIL: $schedule run"; exit 1; }
 grep -h "^coupling: schedule" "$work/ref.log" "$work/alt.log"
 a=$(ls "$work"/ref/output/*_conservation.csv) b=$(ls "$work"/alt/output/*_conservation.csv)
-exec "$(dirname "$0")/compare_monitors.sh" "$a" "$b" "$tol" "schedule against the monolithic-style run"
+# The totals (masses, momentum, solid, fluid and total energy): the terms' split and MPM's numerical
+# terms (differences of large sums) lag with the schedule by more than the totals do.
+exec "$(dirname "$0")/compare_monitors.sh" "$a" "$b" "$tol" "schedule against the monolithic-style run" total_energy

@@ -25,10 +25,10 @@ TEST(ExchangeDeclaration, SeedCylinderMovesTwoComponentsOfEachVectorInTwoDimensi
   EXPECT_EQ(lists(travel, scene),
             "steel: mass velocity(2) temperature specific_volume\n"
             "steel: pressure_force(2) pressure\n"
-            "steel: lagrangian_momentum(2)\n"
+            "steel: lagrangian_momentum(2) coupling_work\n"
             "steel: exchange_momentum(2) exchange_energy\n");
-  EXPECT_EQ(travel.valuesPerCell(), 13);
-  EXPECT_EQ(FieldUses::everything(1).valuesPerCell(), 17);
+  EXPECT_EQ(travel.valuesPerCell(), 14);
+  EXPECT_EQ(FieldUses::everything(1).valuesPerCell(), 18);
 }
 
 TEST(ExchangeDeclaration, FlapWithHeatExchangeMovesTheExchangeEnergy) {
@@ -37,7 +37,7 @@ TEST(ExchangeDeclaration, FlapWithHeatExchangeMovesTheExchangeEnergy) {
   EXPECT_EQ(lists(travel, scene),
             "flap: mass velocity(2) temperature specific_volume\n"
             "flap: pressure_force(2) pressure\n"
-            "flap: lagrangian_momentum(2)\n"
+            "flap: lagrangian_momentum(2) coupling_work\n"
             "flap: exchange_momentum(2) exchange_energy\n");
 }
 

@@ -4,7 +4,7 @@
 //   s' = v,  M v' = -(p - p_L),  p = p0 (h0 / (h0 - s))^gamma,  p_L = p0 (hL0 / (hL0 + s))^gamma,
 // integrated by RK4 to round-off (src/study/reference/piston.h, the study's `piston` reference). Asserted at the scene's spacing: the piston's displacement, and
 // the mean pressure of the trapped gas (its pure-gas cells) against p(t) every millisecond.
-// The goal is 1 % (issue 12); what the coupling reaches today is asserted (4.2 % measured, the
+// The goal is 1 % (issue 12); what the coupling reaches today is asserted (4.3 % measured, the
 // bound 5 %): the gas advected across the moving piston's surface cells
 // (docs/verification-coupled.md, "The piston").
 #include <gtest/gtest.h>
@@ -23,8 +23,18 @@ namespace {
 using study::PistonExact;
 using study::PistonSetup;
 
-TEST(AdiabaticPiston, PressureFollowsTheAdiabatAtTheScenesSpacing) {
-  CoupledRun run(core::loadScene(PISTON_SCENE));
+// Bounds (docs/verification-coupled.md): at the scene's spacing p(t) within 5 % (measured 4.3 %),
+// the final pressure within 4 % (3.4 %); at 50 and 100 cells (to 5 ms) p(t) within 10 %.
+constexpr double kWorstBound = 0.05, kFinalBound = 0.04, kWorstBoundAnyResolution = 0.10;
+
+/// One run: the largest and the final |p / p_exact - 1| of the trapped gas (every millisecond) and
+/// the largest relative displacement error.
+struct PistonErrors {
+  double worst = 0, final = 0, displacement = 0;
+};
+
+PistonErrors runPiston(const char* path) {
+  CoupledRun run(core::loadScene(path));
   const core::Scene& sc = run.scene;
   const PistonSetup e = study::pistonSetup(sc);
   const auto& parts = run.mpm.particles();
@@ -50,20 +60,52 @@ TEST(AdiabaticPiston, PressureFollowsTheAdiabatAtTheScenesSpacing) {
     EXPECT_GT(n, 0);
     return sum / n;
   };
-  double worst = 0;
+  PistonErrors out;
   const double every = 1e-3;
+  std::printf("%s (%d cells)\n", path, sc.mesh.cells()[0]);
   for (double t = every; t <= sc.time.end * (1 + 1e-12); t += every) {
     run.runTo(std::min(t, sc.time.end));
     const PistonExact ex = study::pistonExact(e, run.time());
     const double s = displacement();
-    const double err = trappedPressure(s) / ex.p - 1;
-    worst = std::max(worst, std::abs(err));
-    std::printf("t %.4f: displacement %.5f (exact %.5f), p %.6g (exact %.6g, error %+.4f)\n", run.time(), s, ex.s,
-                trappedPressure(s), ex.p, err);
-    EXPECT_NEAR(s, ex.s, 0.01 * ex.s) << "displacement at t = " << run.time();
-    EXPECT_LT(std::abs(err), 0.05) << "trapped pressure at t = " << run.time();
+    const double p = trappedPressure(s);
+    const double err = p / ex.p - 1;
+    out.worst = std::max(out.worst, std::abs(err));
+    out.final = std::abs(err);
+    out.displacement = std::max(out.displacement, std::abs(s / ex.s - 1));
+    std::printf("t %.4f: displacement %.5f (exact %.5f), p %.6g (exact %.6g, error %+.4f)\n", run.time(), s, ex.s, p,
+                ex.p, err);
   }
-  std::printf("largest |p / p_exact - 1| = %.4f\n", worst);
+  std::printf("largest |p / p_exact - 1| = %.4f, final %.4f, displacement %.4f\n", out.worst, out.final,
+              out.displacement);
+  return out;
+}
+
+TEST(AdiabaticPiston, PressureFollowsTheAdiabatAtTheScenesSpacing) {
+  const PistonErrors r = runPiston(PISTON_SCENE);
+  EXPECT_LT(r.displacement, 0.01);
+  EXPECT_LT(r.worst, kWorstBound) << "p(t) against the adiabat, every millisecond";
+  EXPECT_LT(r.final, kFinalBound) << "the final pressure";
+}
+
+// The scene at 25 (the shipped one, to 20 ms) and at 50 and 100 cells to 5 ms (2.5 and 5 cells of
+// travel: benchmarks/coupled/piston_scene.py N 5e-3, kept short for the suite's time): each run
+// completes (before, the trace gas in the copper's cells was pumped to 1e9 K after 0.98 of a cell
+// of travel; now its temperature follows the copper's, src/ice/exchange/trace_temperature.cpp),
+// the piston's displacement is within 1 % and p(t) within 10 %. Measured 4.3 % (20 ms), 1.0 % and
+// 1.8 % (5 ms); at 20 ms the branch mixedcells had 4.0, 4.9 and 7.4 % (docs/verification-coupled.md):
+// they do not converge yet (gas carried across the moving surface cells, the docs): the fitted
+// order is printed, not asserted.
+TEST(AdiabaticPiston, ThreeResolutionsComplete) {
+  const char* scenes[3] = {PISTON_SCENE, PISTON_SCENE_50, PISTON_SCENE_100};
+  double worst[3];
+  for (int k = 0; k < 3; ++k) {
+    const PistonErrors r = runPiston(scenes[k]);
+    worst[k] = r.worst;
+    EXPECT_LT(r.displacement, 0.01) << scenes[k];
+    EXPECT_LT(r.worst, kWorstBoundAnyResolution) << scenes[k];
+  }
+  std::printf("largest p(t) errors %.4f %.4f %.4f at 25, 50, 100 cells: fitted order %.2f\n", worst[0], worst[1],
+              worst[2], std::log(worst[0] / worst[2]) / std::log(4.0));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       pressureForce(n + "/pressure_force", core::Centering::Cell, owned, 3, 0),
       pressure(n + "/pressure", core::Centering::Cell, owned, 1, 0),
       lagrangianMomentum(n + "/lagrangian_momentum", core::Centering::Cell, owned, 3, 0),
+      couplingWork(n + "/coupling_work", core::Centering::Cell, owned, 1, 0),
       exchangeMomentum(n + "/exchange_momentum", core::Centering::Cell, owned, 3, 0),
       exchangeEnergy(n + "/exchange_energy", core::Centering::Cell, owned, 1, 0) {}
 
@@ -34,7 +35,7 @@ std::vector<core::Field*> SolidExchangeFields::at(ExchangePoint p) {
   switch (p) {
     case ExchangePoint::SolidState: return {&mass, &velocity, &temperature, &specificVolume};
     case ExchangePoint::PressureForce: return {&pressureForce, &pressure};
-    case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum};
+    case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum, &couplingWork};
     case ExchangePoint::ExchangeIncrements: return {&exchangeMomentum, &exchangeEnergy};
   }
   return {};

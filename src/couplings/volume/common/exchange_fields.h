@@ -8,7 +8,8 @@
 ///   PressureForce          fluid -> solid   pressure force on the solid (3) [N],       the face pressure
 ///                                           cell pressure [Pa]
 ///   LagrangianMomentum     solid -> fluid   Lagrangian momentum of the solid (3)        the grid update
-///                                           [kg m/s]
+///                                           [kg m/s], the work the fluid's forces did
+///                                           on it in the grid update [J]
 ///   ExchangeIncrements     fluid -> solid   exchange increments of the solid:           the exchange
 ///                                           momentum (3) [kg m/s], energy [J]
 /// Every field covers the owned cells of its side's rank, component-major, no ghosts.
@@ -40,7 +41,7 @@ struct SolidExchangeFields {
   std::string name;
   core::Field mass, velocity, temperature, specificVolume;  // SolidState
   core::Field pressureForce, pressure;                      // PressureForce
-  core::Field lagrangianMomentum;                           // LagrangianMomentum
+  core::Field lagrangianMomentum, couplingWork;             // LagrangianMomentum
   core::Field exchangeMomentum, exchangeEnergy;             // ExchangeIncrements
 
   SolidExchangeFields(int m, const std::string& n, const core::Box& owned);

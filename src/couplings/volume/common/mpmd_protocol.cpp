@@ -38,7 +38,7 @@ HandshakeSections mpmiceHandshakeSections(const core::Scene& s) {
           {"time", timeKeys(s.time)},
           {"exchanged fields",
            "solid state: mass velocity temperature specific_volume | pressure force: pressure_force pressure | "
-           "Lagrangian momentum: lagrangian_momentum | exchange increments: exchange_momentum exchange_energy"}};
+           "Lagrangian momentum: lagrangian_momentum coupling_work | exchange increments: exchange_momentum exchange_energy"}};
 }
 
 FieldUses agreeExchange(const Participant& p, const core::Scene& scene, bool solid, const ExchangeDeclaration& mine) {

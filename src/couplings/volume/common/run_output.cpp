@@ -4,10 +4,15 @@ namespace mpmice::coupler {
 
 SideTotals SideTotals::unpack(const std::vector<double>& v) {
   SideTotals t;
-  if (v.size() != 5) return t;
+  if (v.size() != 10) return t;
   t.mass = v[0];
   t.momentum = {v[1], v[2], v[3]};
-  t.energy = v[4];
+  t.kinetic = v[4];
+  t.internal = v[5];
+  t.heat = v[6];
+  t.transfer = v[7];
+  t.integration = v[8];
+  t.damping = v[9];
   return t;
 }
 
@@ -23,8 +28,10 @@ RunOutput::RunOutput(const core::Scene& scene, const core::Comm& comm, const cor
       core::CsvWriter::cutForResume(comm, path, static_cast<std::int64_t>(resumed->scalar("run.conservation_csv")));
     csv_ = std::make_unique<core::CsvWriter>(
         comm, path,
-        std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y", "momentum_z",
-                                 "solid_energy", "fluid_energy", "total_energy"},
+        std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y",
+                                 "momentum_z", "solid_energy", "fluid_energy", "total_energy", "solid_kinetic",
+                                 "solid_elastic", "solid_heat", "fluid_kinetic", "fluid_internal", "mpm_transfer",
+                                 "mpm_stress_integration", "mpm_damping", "balance"},
         0, resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
   }
 }
@@ -42,8 +49,10 @@ void RunOutput::writeFields(long step, double time, const std::vector<const core
 
 void RunOutput::writeTotals(long step, double time, const SideTotals& s, const SideTotals& f) {
   if (!enabled_ || !csv_) return;
+  const double total = s.energy() + f.energy(), created = s.created() + f.created();
   csv_->row({double(step), time, s.mass, f.mass, s.momentum[0] + f.momentum[0], s.momentum[1] + f.momentum[1],
-             s.momentum[2] + f.momentum[2], s.energy, f.energy, s.energy + f.energy});
+             s.momentum[2] + f.momentum[2], s.kinetic + s.internal, f.energy(), total, s.kinetic, s.internal, s.heat,
+             f.kinetic, f.internal, s.transfer, s.integration, s.damping, total - created});
 }
 
 }  // namespace mpmice::coupler

@@ -24,6 +24,7 @@ void FluidSide::consumeAProduceB(double dt) {
 }
 
 void FluidSide::consumeCProduceD() {
+  for (auto& f : fields_) ice_.setExternalCouplingWork(f.material, all(f.couplingWork));
   ice_.computeSourcesAndLagrangian();
   for (auto& f : fields_) ice_.setExternalLagrangianMomentum(f.material, all(f.lagrangianMomentum));
   ice_.exchange();
@@ -64,7 +65,8 @@ SideTotals FluidSide::totals() const {
   SideTotals s;
   s.mass = t.mass;
   s.momentum = t.momentum;
-  s.energy = t.energy;
+  s.kinetic = t.kinetic;
+  s.internal = t.energy - t.kinetic;
   return s;
 }
 

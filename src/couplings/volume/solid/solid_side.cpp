@@ -3,6 +3,7 @@
 namespace mpmice::coupler {
 
 SolidSide::SolidSide(mpm::MpmSolver& mpm) : mpm_(mpm) {
+  mpm_.useGridStressWorkByDefault();  // mpm.stress_work auto: the energy budget closes
   const core::Box owned = mpm.decomposition().cellBox(mpm.comm().rank());
   for (int m : mpm.scene().solids()) fields_.emplace_back(m, mpm.scene().materials[m].name, owned);
 }
@@ -27,7 +28,10 @@ void SolidSide::consumeBProduceC() {
   if (!fields_.empty()) cells.addCellPressureStress(fields_.front().pressure);  // p_ref: the solids' EOS
   for (auto& f : fields_) cells.addCellForce(f.material, f.pressureForce);
   mpm_.updateGrid();
-  for (auto& f : fields_) cells.cellLagrangianMomentum(f.material, f.lagrangianMomentum);
+  for (auto& f : fields_) {
+    cells.cellLagrangianMomentum(f.material, f.lagrangianMomentum);
+    cells.cellCouplingWork(f.material, f.couplingWork);
+  }
 }
 
 void SolidSide::consumeDFinishStep() {
@@ -35,6 +39,7 @@ void SolidSide::consumeDFinishStep() {
   for (auto& f : fields_) {
     cells.applyCellMomentumIncrement(f.material, f.exchangeMomentum);
     cells.addCellEnergy(f.material, f.exchangeEnergy);
+    cells.addCellEnergy(f.material, cells.kineticDeficit(f.material));  // what the nodes did not take
   }
   mpm_.gridToParticles();
   mpm_.endStep();
@@ -58,7 +63,13 @@ SideTotals SolidSide::totals() const {
   SideTotals t;
   t.mass = s[0];
   t.momentum = {s[1], s[2], s[3]};
-  t.energy = mpm_.energies().total();
+  const mpm::Energies e = mpm_.energies();
+  t.kinetic = e.kinetic;
+  t.internal = e.strain;
+  t.heat = e.heat;
+  t.transfer = e.transfer;
+  t.integration = e.integration;
+  t.damping = e.damping;
   return t;
 }
 

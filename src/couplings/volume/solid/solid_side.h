@@ -4,8 +4,10 @@
 ///   beginStep(dt) + produceA()   particles to grid; cell mass, velocity, temperature, specific volume
 ///   consumeB() + produceC()      internal forces with the mean-stress correction (sigma + (p - p_ref) I)
 ///                                + the fluid's pressure force; grid update;
-///                                cell Lagrangian momentum
-///   consumeD() + finishStep()    exchange increments to the nodes; particles updated; migration
+///                                cell Lagrangian momentum and the work those forces did
+///   consumeD() + finishStep()    exchange increments to the nodes (the kinetic energy the nodes
+///                                do not take becomes heat); exchange heat to the particles;
+///                                particles updated; migration
 /// The same object serves the in-process driver (mpmice) and the MPMD participant (mpm_solver):
 /// only the transport of the fields differs, so both give the same numbers.
 #include <vector>

@@ -1,0 +1,79 @@
+// IceSolver phase 10, last part (coupled runs): the temperature of a fluid dispersed in a solid
+// follows the solid's. In a cell the solid fills, the fluid is a trace (volume fraction ~1e-10, or
+// the little gas advection leaves behind a moving surface): its heat capacity is negligible and its
+// Lagrangian phase is not physical. It takes the share kappa_f / kbar of the cell's volume change
+// (up to 1 / theta_f), capped at +-50 % a step, doing p dV work at the cell pressure, and the next
+// equilibrium pressure gives it its volume back without work: a ratchet that pumps it to 1e9 K in a
+// few hundred steps wherever the solid moves or rings (the piston's copper, the cylinder's wall at
+// K = 0; docs/verification-coupled.md "The piston"). A fluid that is a real phase of the cell (a
+// mixed cell at the surface) must keep its own adiabat. What separates the two is the share of the
+// cell's compliance each carries: the solids carry w = sum_s theta_s kappa_s / kbar (the fraction
+// of a volume change of the cell the solids take). Where w ~ 1 the cell's mechanics are the solid's
+// and the fluid is embedded in it; where w ~ 0 the fluid is the cell's compliance. The crossover is
+// at theta_f ~ kappa_s / kappa_f (p / K_s, 1e-6 for air against copper), so a gas fraction of 1e-3
+// keeps its own temperature to 1e-3 and a trace of 1e-10 follows the solid's to 1e-4. A fluid
+// stiffer than the solids beside it (water against soft rubber, kappa_f ~ 1e-3 kappa_s) is never
+// pumped: it takes less than its volume's share of a volume change; yet there w ~ 1 wherever the
+// rubber is (it is the cell's compliance), so w is weighted by kappa_f / (kappa_f + kappa_s)
+// (kappa_s the solids' volume-mean compressibility): ~1 for a gas against a metal (7e-6 against
+// 7e-12 1/Pa), ~1e-3 for water against the added-mass rubber (K = 2 MPa), whose temperature changes
+// the water followed with w alone: the added-mass period went from -0.10 % to +0.74 % (-0.10 %
+// again so weighted). So each fluid's temperature change in this step becomes the fraction w (so
+// weighted) of the solids' change (their heat-capacity-weighted one, from the start of the step to
+// now) plus (1 - w) of its own: a trace follows the solids' adiabat, a real phase keeps its own.
+// The change, not the temperature: without heat exchange (ice.exchange.heat 0) a trace keeps its
+// offset from the solid's temperature, and drag heat shared at one temperature rise stays one
+// temperature rise (IceExchange.DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace). The heat
+// comes from the solids in proportion to their heat capacities (for a trace, ~1e-13 of theirs), so
+// energy is conserved, and the solids' part goes to their solver with the exchange increments
+// (dEnergy).
+#include "ice/solver/ice_solver.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+void IceSolver::relaxEmbeddedFluidTemperatures() {
+  if (!anyExternal_) return;
+  const core::Box& sb = st_.press.box();
+  forEach(owned_, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    double kbar = 0, ks = 0, thetaS = 0, Cs = 0, CsdTs = 0;
+    for (const MaterialState& m : st_.mat) {
+      const double tk = m.theta.data()[c] * m.kappa.data()[c];
+      kbar += tk;
+      if (!m.external || !(m.mass.data()[c] > 0)) continue;
+      ks += tk;
+      thetaS += m.theta.data()[c];
+      const double C = m.mass.data()[c] * m.eos->cv();
+      Cs += C;
+      CsdTs += C * (m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]) -
+                    m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]));
+    }
+    if (!(Cs > 0) || !(kbar > 0)) return;
+    const double w = ks / kbar, dTs = CsdTs / Cs, kappaS = thetaS > 0 ? ks / thetaS : 0.0;
+    double Q = 0;  // heat [J] the fluids take from the solids
+    for (MaterialState& m : st_.mat) {
+      const double mass = m.mass.data()[c];
+      if (m.external || !(mass > 0)) continue;
+      double& e = m.eintL.data()[c];
+      const double dTown = m.eos->temperature(1.0 / m.spvolL.data()[c], e) -
+                           m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]);
+      const double kf = m.kappa.data()[c];
+      const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
+      const double de = wf * m.eos->cv() * (dTs - dTown);
+      e += de;
+      Q += mass * de;
+    }
+    if (Q == 0.0) return;
+    for (MaterialState& m : st_.mat) {
+      const double mass = m.mass.data()[c];
+      if (!m.external || !(mass > 0)) continue;
+      const double share = -Q * mass * m.eos->cv() / Cs;  // [J]
+      m.eintL.data()[c] += share / mass;
+      m.dEnergy(i, j, k) += share;
+    }
+  });
+}
+
+}  // namespace mpmice::ice
