@@ -62,15 +62,6 @@ void checkEverySolidHasParticles(const core::Scene& scene, const std::vector<dou
          << "or raise particles_per_cell";
       throw std::invalid_argument(os.str());
     }
-  // A solid material that no geometry object places has no particle either (the output and the
-  // solver's loops over a material assume it has some): name the material.
-  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    const auto& mat = scene.materials[m];
-    if (mat.kind != core::MaterialKind::Solid || count[m] > 0) continue;
-    throw std::invalid_argument((mat.where.line ? mat.where.str() + ": " : std::string()) + "materials." + mat.name +
-                                ": solid '" + mat.name + "' yields no particle: no geometry object places it; add a "
-                                "geometry object with material: " + mat.name + " or remove the material");
-  }
 }
 
 int loadMaterial(const core::Scene& scene, std::size_t l,

@@ -22,8 +22,7 @@ void checkOptions(const core::Scene& scene);
 std::vector<std::unique_ptr<ConstitutiveModel>> createSolidModels(const core::Scene& scene);
 
 /// A solid the scene places but no particle represents (a shape smaller than the particles'
-/// spacing) is an error naming its region; a solid material no geometry object places is an error
-/// naming the material. `count[m]`: particles of material m on all ranks.
+/// spacing) is an error naming its region. `count[m]`: particles of material m on all ranks.
 void checkEverySolidHasParticles(const core::Scene& scene, const std::vector<double>& count);
 
 /// The material index of loads[l]: a solid of the scene (`models` from createSolidModels).

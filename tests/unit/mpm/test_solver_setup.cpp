@@ -187,23 +187,6 @@ TEST(ResourceEstimate, OverlappingSolidsCountOncePerPointAndLargeScenesAreSample
   EXPECT_EQ(core::seededParticles(s, 1e9), double(real));
 }
 
-TEST(BadInput, ASolidMaterialThatNoObjectPlacesIsNamedAtStartAndByTheCheck) {
-  // A second solid, declared but placed by no geometry object: no particle of it anywhere. It used
-  // to start and fail in the HDF5 writer ("addr overflow" on an empty particle dataset).
-  auto s = blockScene();
-  s.materials.push_back(pr::solid("rubber", 1100, pr::elastic("linear_elastic", 1e6, 0.45)));
-  const auto m = errorOf(s);
-  EXPECT_NE(m.find("materials.rubber: solid 'rubber' yields no particle: no geometry object places it"),
-            std::string::npos) << m;
-  EXPECT_NE(m.find("add a geometry object with material: rubber or remove the material"), std::string::npos) << m;
-  try {
-    validateStartup(s);
-    FAIL() << "validateStartup accepted a solid material without particles";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), m);
-  }
-}
-
 TEST(StableStep, StrongDampingLimitsTheStepAndIsNamed) {
   auto s = blockScene();
   s.mpm.damping = 1e9;  // [1/s]: far beyond what the CFL step of this block allows
