@@ -284,7 +284,9 @@ void OutputWriter::writeParticles(const H5Group& root, const ParticleOutput& p) 
     for (std::size_t c = 0; c < nc; ++c)
       if (!comps[c].empty())
         for (std::size_t q = 0; q < n; ++q) buf[q * nc + c] = comps[c][q];
-    writeBlock(ds, start, count, buf, dxpl.id());
+    // No particle on any rank (a scene whose solids are all cut away): the empty dataset has no
+    // storage to write into (HDF5 "addr overflow"), so it stays as created, with zero rows.
+    if (total > 0) writeBlock(ds, start, count, buf, dxpl.id());
   };
 
   writeArray("position", {p.position[0], p.position[1], p.position[2]}, true);

@@ -1,8 +1,8 @@
 #pragma once
 /// @brief What a scene needs of the machine, estimated before anything is allocated.
 ///
-/// Cells and nodes in checked 64-bit arithmetic; particles from each solid region's bounds (the
-/// whole mesh where a shape has none) times its particles per cell; memory from the bytes a
+/// Cells and nodes in checked 64-bit arithmetic; particles counted by the seeding's own rule
+/// (seededParticles); memory from the bytes a
 /// solver holds per cell and material, per node and solid, and per particle, measured on this
 /// project's solvers (peak resident memory against the count: ICE about 215 bytes per cell and
 /// material, MPM about 400 bytes per particle with its grid; docs/benchmarks.md). The estimate
@@ -23,6 +23,13 @@ struct ResourceEstimate {
 inline constexpr double kBytesPerCellPerMaterial = 200;  // ICE (fluids and solids as materials)
 inline constexpr double kBytesPerNodePerSolid = 100;     // MPM grid
 inline constexpr double kBytesPerParticle = 300;         // MPM particles
+
+/// The particles mpm_solver's seeding makes (mpm/particles/particle_generator.h): every solid fill
+/// entry tests particles_per_cell[d] sub-cell centres per direction in the cells its shape's bounds
+/// touch (the whole mesh where unbounded) and keeps a point its shape contains and no later solid
+/// object claims. Exact when at most `budget` points (shared by the objects) are tested; above that every k-th
+/// point per direction is tested and the count scaled (a mesh of 1e12 cells is estimated, not seeded).
+double seededParticles(const Scene& scene, double budget = 2e6);
 
 /// The estimate of a parsed scene (the mesh's counts are already known to fit).
 ResourceEstimate estimateResources(const Scene& scene);

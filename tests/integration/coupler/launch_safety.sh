@@ -3,8 +3,9 @@
 #   launch_safety.sh COUPLER BIN_DIR SHORT_SCENE LONG_SCENE MODE   (LONG_SCENE: its time.end is moved far away)
 # MODE no_shell:       scenes named x;touch${IFS}INJECTED;.yaml, with ( & ' $HOME, run to their end
 #                      (exit 0) and nothing is injected.
-# MODE sigterm:        SIGTERM to a running `coupler run` ends it within a few seconds, non-zero,
-#                      naming the signal, and no mpirun / mpm_solver / ice_solver of it remains.
+# MODE sigterm, sigint: SIGTERM (SIGINT, as ^C sends) to a running `coupler run` ends it within a few
+#                      seconds with status 128 + signal, naming the signal, and no mpirun /
+#                      mpm_solver / ice_solver of it remains.
 # MODE second_run:     a second `coupler run` of the scene into the same output directory is
 #                      refused at start naming the holder (pid, host); a stale lock is taken over.
 # MODE stall_mid_run:  ice_solver sleeps for ever after step 5 (MPMICE_FAULT_STALL; LONG_SCENE with a
@@ -32,21 +33,22 @@ case "$mode" in
       quoted="'${name//\'/\'\\\'\'}'"
       grep -qF -- "$quoted" <<<"$out" || fail "the printed line lacks the quoted name $quoted"
     done ;;
-  sigterm)
+  sigterm|sigint)
+    sig=$(tr a-z A-Z <<<"$mode"); want=$(( 128 + $(kill -l "${sig#SIG}") ))
     long_scene "$work/long.yaml"
     "$coupler" run --bin-dir "$bin" "$work/long.yaml" > log 2>&1 &
     pid=$!
     for _ in $(seq 100); do pgrep -f -- "ice_solver $work/long.yaml" > /dev/null && break; sleep 0.1; done
     pgrep -f -- "ice_solver $work/long.yaml" > /dev/null || { cat log; fail "the launch did not start"; }
     sleep 1
-    kill -TERM $pid
+    kill -"${sig#SIG}" $pid
     for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-    kill -0 $pid 2>/dev/null && fail "coupler run still runs 10 s after SIGTERM"
+    kill -0 $pid 2>/dev/null && fail "coupler run still runs 10 s after $sig"
     wait $pid; status=$?
     grep -v '^\[' log | tail -5
     echo "exit status: $status"
-    [ $status -ne 0 ] || fail "expected a non-zero exit"
-    grep -q "coupler: stopped by SIGTERM" log || fail "the output does not name SIGTERM"
+    [ $status -eq $want ] || fail "expected exit status $want (128 + $sig)"
+    grep -q "coupler: stopped by $sig" log || fail "the output does not name $sig"
     sleep 0.5
     left=$(pgrep -af -- "$work/long.yaml")
     [ -z "$left" ] || fail "left running: $left" ;;
