@@ -15,6 +15,14 @@ namespace mpmice::mpm {
 /// tests/unit/scene/test_scene_parse.cpp pins the catalog's copy of the value.
 inline constexpr double kReferencePressure = 101325.0;
 
+/// [cells] Width over which the solid's node mass falls to zero at its surface, as the mean-stress
+/// correction sees it: a particle is wholly a surface particle (the pressure's excess over the
+/// solid side's acts along the normal only) where h |grad M| / M >= 1 / kSurfaceLayerCells, M the
+/// node mass interpolated to the particle. The B-splines' mass ramps over about two cells.
+/// Pinned by: tests/verification/coupled/test_cylinder_annulus.cpp (seed cylinder at dx 0.05:
+/// 1.0 gives 0.0501, 2.0 0.0510, interior bias -0.5 % and +0.2 %; docs/coupling.md).
+inline constexpr double kSurfaceLayerCells = 2.0;
+
 /// [K] The temperature of the absent-solid state (a cell the solid does not reach still needs a
 /// valid state for ICE's equilibrium pressure; its volume fraction is zero).
 /// Pinned by: no test directly; the MPMD-against-in-process launch tests

@@ -152,18 +152,61 @@ void NodeCellOperators::cellCouplingWork(int material, Field& out) const {
   });
 }
 
-void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv) {
-  current(material, "applyCellVelocityIncrement");
+void NodeCellOperators::sumParticleMassPerCell(std::size_t b, std::size_t e) {
+  cellMass_.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
+  for (std::size_t i = b; i < e; ++i) {
+    const auto c = cellOfParticle(mesh_, p_, i, cells_);
+    cellMass_[static_cast<std::size_t>(cells_.index(c[0], c[1], c[2]))] += p_.mass[i];
+  }
+}
+
+template <class F>
+void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
+  const SolidCellState& cs = states_[material];
   const Field& nm = nodeMass_[material];
   Grid& g = grid_;
   const int dim = mesh_.dim();
-  g.remap.fill(0.0);  // node momentum increments
+  const auto [b, e] = p_.materialRange(material);
+  sumParticleMassPerCell(b, e);
+  auto slot = [&](const std::array<int, 3>& c) { return static_cast<std::size_t>(cells_.index(c[0], c[1], c[2])); };
+  g.remap.fill(0.0);
+  // Cells holding particles of m: each particle takes its mass share of its cell's vector and gives
+  // it to its nodes with its own shape function (the weights of its particle-to-grid transfer).
+  double* r[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const GridGeom geom = g.geom();
+  kernels::dispatch(shape_, dim, [&]<class S, int D>() {
+    kernels::Stencil<S, D> st;
+    for (std::size_t i = b; i < e; ++i) {
+      const auto c = cellOfParticle(mesh_, p_, i, cells_);
+      if (!(cs.mass(c[0], c[1], c[2]) > massFloor_)) continue;
+      const double share = p_.mass[i] / cellMass_[slot(c)];
+      double v[3] = {0, 0, 0};
+      for (int d = 0; d < D; ++d) v[d] = share * cellVector(c[0], c[1], c[2], d);
+      st.compute(p_, i, geom);
+      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
+        for (int d = 0; d < D; ++d) r[d][k] += w * v[d];
+      });
+    }
+  });
+  bcs_.fold(g.remap, Parity::Vector);
+  // Cells the solid reaches through its nodes only (no particle inside): the corner nodes in
+  // proportion to their mass of m (the transpose of the node-to-cell average).
   core::forEach(cells_, [&](int i, int j, int k) {
+    const double mc = cs.mass(i, j, k);
+    if (!(mc > massFloor_) || cellMass_[static_cast<std::size_t>(cells_.index(i, j, k))] > 0) return;
     forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk);
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * dv(i, j, k, d);
+      const double w = share * nm(ni, nj, nk) / mc;
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * cellVector(i, j, k, d);
     });
   });
+}
+
+void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv) {
+  const SolidCellState& cs = current(material, "applyCellVelocityIncrement");
+  Grid& g = grid_;
+  const int dim = mesh_.dim();
+  // Node momentum increments: the cell's m_c dv spread as a cell vector.
+  spreadCellVectors(material, [&](int i, int j, int k, int d) { return cs.mass(i, j, k) * dv(i, j, k, d); });
   g.sumAndFill({&g.remap});
   const double* m = g.mass.data();
   for (int d = 0; d < dim; ++d) {
@@ -217,19 +260,8 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
 }
 
 void NodeCellOperators::addCellForce(int material, const Field& force) {
-  const SolidCellState& cs = current(material, "addCellForce");
-  const Field& nm = nodeMass_[material];
-  Grid& g = grid_;
-  const int dim = mesh_.dim();
-  g.remap.fill(0.0);  // node force contributions of this rank's cells
-  core::forEach(cells_, [&](int i, int j, int k) {
-    const double mc = cs.mass(i, j, k);
-    if (!(mc > massFloor_)) return;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * force(i, j, k, d);
-    });
-  });
+  current(material, "addCellForce");
+  spreadCellVectors(material, [&](int i, int j, int k, int d) { return force(i, j, k, d); });
   addRemapToExternalForce();
 }
 
@@ -270,21 +302,48 @@ void NodeCellOperators::cellToParticles(const Field& cellValue, double offset, s
 }
 
 void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
-  cellToParticles(pcell, pRef, particlePressure_);
+  cellToParticles(pcell, pRef, particlePressure_);  // p_p - pRef; nodeValue_ holds the node values
   Grid& g = grid_;
   g.remap.fill(0.0);
   double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
   const GridGeom geom = g.geom();
+  const double* nv = nodeValue_.data(0);
+  const double* nw = nodeValue_.data(1);
+  const double* nm = g.mass.data();
+  double h = mesh_.dx(0);
+  for (int d = 1; d < mesh_.dim(); ++d) h = std::min(h, mesh_.dx(d));
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const double s = p_.vol[i] * particlePressure_[i];
-      if (s == 0.0) continue;
+      const double q = particlePressure_[i];
       st.compute(p_, i, geom);
+      // The solid's side: the node pressure at the heaviest node of the stencil; the node mass
+      // and its gradient at the particle give the surface normal and how much of a surface it is.
+      double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = q;
+      st.forNodes(geom, [&](std::int64_t k, double w, double gx, double gy, double gz) {
+        M += w * nm[k];
+        G[0] += gx * nm[k];
+        G[1] += gy * nm[k];
+        G[2] += gz * nm[k];
+        if (nw[k] > 0 && nm[k] > heaviest) {
+          heaviest = nm[k];
+          qIn = nv[k] / nw[k];
+        }
+      });
+      const double gn = std::sqrt(G[0] * G[0] + G[1] * G[1] + G[2] * G[2]);
+      const double a = M > 0 && gn > 0 ? std::min(1.0, kSurfaceLayerCells * h * gn / M) : 0.0;
+      // Stress added: (q - a e) I + a e n n, e = q - qIn: the excess over the solid side's pressure
+      // acts along the normal only (a layer of isotropic excess would carry hoop load).
+      const double V = p_.vol[i], ex = a * (q - qIn), iso = q - ex;
+      if (iso == 0.0 && ex == 0.0) continue;
+      double n[3] = {0, 0, 0};
+      if (gn > 0)
+        for (int d = 0; d < 3; ++d) n[d] = G[d] / gn;
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
-        f[0][k] -= s * gx;
-        if (D > 1) f[1][k] -= s * gy;
-        if (D > 2) f[2][k] -= s * gz;
+        const double gg[3] = {gx, gy, gz};
+        double ng = 0;
+        for (int d = 0; d < D; ++d) ng += n[d] * gg[d];
+        for (int d = 0; d < D; ++d) f[d][k] -= V * (iso * gg[d] + ex * n[d] * ng);
       });
     }
   });

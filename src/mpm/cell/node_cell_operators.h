@@ -9,9 +9,10 @@
 /// and the operators built on them, in the order of the MPM-ICE step:
 ///   cellState(m)                    cell mass, velocity, temperature, volume, specific volume of
 ///                                   solid m (absent-solid state where it does not reach)
-///   addCellPressureStress(p)        the mean-stress force: sigma + (p_cell - p_ref) I
-///   addCellForce(m, F)              the transpose of the node-to-cell average: a cell force to
-///                                   the nodes in proportion to their mass of m
+///   addCellPressureStress(p)        the mean-stress force: sigma + (p - p_ref) I, the excess over
+///                                   the solid side's pressure along the surface normal only
+///   addCellForce(m, F)              a cell force to the particles of m in the cell (mass shares),
+///                                   each to its nodes with its own shape function
 ///   cellLagrangianMomentum(m, out)  the node-to-cell average of m v_L
 ///   cellCouplingWork(m, out)        the work the coupling forces did on the nodes, per cell
 ///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes; the
@@ -100,8 +101,8 @@ class NodeCellOperators {
   /// step's grid update (Grid::externalWork), node-to-cell averaged and shared among the solids in
   /// proportion to their node mass: sums over the cells to the nodes' total (after updateGrid).
   void cellCouplingWork(int material, core::Field& out) const;
-  /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity
-  /// (the transpose of the node-to-cell average, weighted by the node mass of m). Collective.
+  /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity:
+  /// the momentum m_cell dv spread as addCellForce spreads a force. Collective.
   void applyCellVelocityIncrement(int material, const core::Field& dv);
   /// The same for per-cell momentum increments [kg m/s] (ICE's exchange momentum): divided by the
   /// cell mass of m (0 where it is absent), then applyCellVelocityIncrement. Collective.
@@ -113,16 +114,27 @@ class NodeCellOperators {
   /// cells'), and walls stop constrained components, so they take less: the solid gets the
   /// difference as heat (addCellEnergy), and the step stays conservative.
   [[nodiscard]] const core::Field& kineticDeficit(int material) const { return deficit_.at(material); }
-  /// Adds per-cell forces on material m (owned cells, 3 components) to the external node force,
-  /// shared among each cell's corner nodes in proportion to their mass of m (the transpose of the
-  /// node-to-cell average; the total force is kept). After cellState(m). Collective.
+  /// Adds per-cell forces on material m (owned cells, 3 components) to the external node force:
+  /// each cell's force shared among the particles of m in it in proportion to their mass, each
+  /// share given to the particle's nodes with its own shape function (the same weights as its
+  /// particle-to-grid transfer, so the load reaches the particles where they are; a cell's force
+  /// used to go to its corner nodes by node mass, which at a surface put a fifth of the seed
+  /// cylinder's load a cell deep into the wall). A cell the solid reaches only through its nodes
+  /// (no particle inside) keeps the corner-node-mass transpose. The total force is kept. After
+  /// cellState(m). Collective.
   void addCellForce(int material, const core::Field& force);
   /// The mean-stress correction: the internal force of every particle uses sigma + (p_p - pRef) I,
   /// p_p the cell pressure interpolated to the particle (cellToParticles: cells -> nodes -> the
   /// particle's shape function, as Uintah's MPMICE does; a particle in a surface cell then sees
   /// the pressure gradient across the surface instead of one cell's value: Eq. 13 error of the
-  /// seed cylinder 0.0845 -> 0.0733 at dx 0.025, docs/coupling.md). Adds -sum_p V_p (p_p - pRef)
-  /// grad w_ip to the external node force. Collective.
+  /// seed cylinder 0.0845 -> 0.0733 at dx 0.025, docs/coupling.md). Adds -sum_p V_p S_p grad w_ip
+  /// to the external node force, S_p = (q - a e) I + a e n n with q = p_p - pRef, e = q - q_in the
+  /// excess over the node value at the heaviest node of the particle's stencil (the solid's side),
+  /// n the normal of the node mass and a in [0, 1] how much of a surface the particle is
+  /// (kSurfaceLayerCells). The gas pressure the interpolation carries into the surface particles
+  /// then pushes along the normal only: as an isotropic stress that layer carried hoop load and
+  /// left the wall 1.3 % (dx 0.025) to 2.8 % (dx 0.05) short of the load (docs/coupling.md). A
+  /// uniform pressure stays isotropic. Collective.
   void addCellPressureStress(const core::Field& cellPressure, double pRef);
   void addCellPressureStress(const core::Field& cellPressure) { addCellPressureStress(cellPressure, pRef_); }
   /// A cell-centred scalar (owned cells) minus `offset`, interpolated to every particle: each node
@@ -142,6 +154,12 @@ class NodeCellOperators {
  private:
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
   const SolidCellState& current(int material, const char* op) const;
+  /// cellMass_ = the mass of particles [b, e) in each owned cell.
+  void sumParticleMassPerCell(std::size_t b, std::size_t e);
+  /// Spreads per-cell vectors cellVector(i, j, k, d) of material m into the grid's remap field
+  /// (not summed across ranks): see addCellForce.
+  template <class F>
+  void spreadCellVectors(int material, F&& cellVector);
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
 
@@ -163,6 +181,7 @@ class NodeCellOperators {
   std::vector<double> particlePressure_;       // addCellPressureStress() scratch
   core::Field nodeScratch_, nodeEnergy_;       // applyCellMomentumIncrement(), addCellEnergy() scratch
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
+  std::vector<double> cellMass_;               // spreadCellVectors() scratch
 };
 
 }  // namespace mpmice::mpm

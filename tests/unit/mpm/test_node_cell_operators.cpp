@@ -126,18 +126,21 @@ TEST(NodeCellOperators, UniformStateMapsToItselfAndEmptyCellsAreAbsent) {
   }
 }
 
-// The transpose (addCellForce) spreads a cell quantity to the nodes in proportion to their mass:
-// the spread cell mass adds up to the cell mass, and m_c u goes to m_n u at every node.
-TEST(NodeCellOperators, TransposeIsAdjointOfTheNodeToCellAverage) {
+// addCellForce spreads a cell quantity through the particles in the cell (mass shares, each with
+// its own shape function): it is the transpose of the particle-to-cell sum, so the particles' cell
+// mass times u goes to m_n u at every node, and the spread total is the cell total.
+TEST(NodeCellOperators, TransposeIsAdjointOfTheParticleToCellSum) {
   for (int dim : {2, 3}) {
     MpmSolver solver(scene(dim), self());
     start(solver);
     NodeCellOperators& ops = solver.cells();
     const SolidCellState& cs = ops.cellState(0);
     core::Field force("force", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
-    core::forEach(force.box(), [&](int i, int j, int k) {
-      for (int d = 0; d < 3; ++d) force(i, j, k, d) = cs.mass(i, j, k) * kU[d];
-    });
+    const ParticleSet& ps = solver.particles();
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const auto c = cellOfParticle(solver.scene().mesh, ps, i, force.box());
+      for (int d = 0; d < 3; ++d) force(c[0], c[1], c[2], d) += ps.mass[i] * kU[d];
+    }
     ops.addCellForce(0, force);
     const Grid& g = solver.grid();
     const core::Field& fe = g.externalForce;
@@ -163,7 +166,7 @@ TEST(NodeCellOperators, TransposeIsAdjointOfTheNodeToCellAverage) {
     core::Field P("P", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
     ops.cellLagrangianMomentum(0, P);
     core::forEach(P.box(), [&](int i, int j, int k) {
-      for (int d = 0; d < 3; ++d) EXPECT_NEAR(P(i, j, k, d), force(i, j, k, d), 1e-12);
+      for (int d = 0; d < 3; ++d) EXPECT_NEAR(P(i, j, k, d), cs.mass(i, j, k) * kU[d], 1e-12);
     });
   }
 }
