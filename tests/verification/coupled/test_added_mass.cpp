@@ -7,10 +7,10 @@
 // period from its zero crossings (down at T/2, up at T).
 // Asserted: the monolithic-style and the implicit serial schedule with IQN-ILS ring at the exact
 // period within 1 % (measured -0.10 %; the first swing back within 2.5 % of T/2, measured -1.7 %)
-// and keep their amplitude (within 15 % over the period); the explicit schedules stop
-// with the health check's message (a non-physical state of the water, named) within 2 ms. That
-// stop is not the added-mass instability: the explicit schedules stop the same way with everything
-// at rest and at solid densities up to 100 times the water's (docs/verification-coupled.md).
+// and keep their amplitude (within 15 % over the period), and so do the explicit schedules
+// (measured -0.69 %): the fluid is compressible and its acoustics resolved, so the lag does not
+// amplify here. At rest every schedule keeps the column at its pressure (the explicit ones did
+// not while their first solid step saw the pressure from before the slab was placed).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -124,28 +124,44 @@ TEST(AddedMass, ImplicitSerialWithIqnIlsRingsAtTheExactPeriod) {
   expectExactPeriod(core::Schedule::ImplicitSerial, core::AccelerationType::IqnIls, "implicit_serial iqn_ils");
 }
 
-/// The explicit schedules stop: the health check names the non-physical state.
-void expectExplicitStops(core::Schedule schedule, const char* label) {
-  CoupledRun run(sceneWith(schedule));
-  std::string message;
-  try {
-    run.runTo(2e-3);
-  } catch (const core::HealthError& e) {
-    message = e.what();
-  }
-  std::printf("%s: stopped at step %ld, t = %.4g s: %s\n", label, run.steps, run.time(), message.c_str());
-  ASSERT_FALSE(message.empty()) << label << " ran 2 ms without a non-physical state";
-  EXPECT_NE(message.find("non-physical state"), std::string::npos) << message;
-  EXPECT_NE(message.find("'water'"), std::string::npos) << message;
-  EXPECT_NE(message.find("in cell"), std::string::npos) << message;
+/// The explicit schedules run the solid first with what the fluid primed at t = 0. At rest they
+/// must keep the column at its pressure: the solid's first step used to see ICE's equilibrium
+/// pressure from before the slab was placed (-gamma p_inf = -2.64e9 Pa in the slab's cells), which
+/// threw the water to 6.9e7 Pa at step 2 and stopped every explicit run within 0.5 ms.
+void expectRestStaysAtRest(core::Schedule schedule, const char* label) {
+  core::Scene s = sceneWith(schedule);
+  for (auto& r : s.geometry) r.velocity = {0, 0, 0};
+  CoupledRun run(std::move(s));
+  double worst = 0;
+  const double p0 = 1.0e6;
+  run.runTo(2e-3, [&] {
+    const core::Field& p = run.ice.pressure();
+    core::forEach(run.ice.ownedBox(), [&](int i, int j, int k) {
+      if (run.mpm.time() > 0) worst = std::max(worst, std::abs(p(i, j, k) - p0) / p0);
+    });
+  });
+  std::printf("%s at rest: max |p - p0| / p0 over 2 ms = %.3g (%ld steps)\n", label, worst, run.steps);
+  EXPECT_LT(worst, 1e-3) << label << ": the column left its pressure with everything at rest";
 }
 
-TEST(AddedMass, ExplicitSerialStopsWithTheHealthChecksMessage) {
-  expectExplicitStops(core::Schedule::ExplicitSerial, "explicit_serial");
+TEST(AddedMass, ExplicitSerialKeepsTheColumnAtRestAtItsPressure) {
+  expectRestStaysAtRest(core::Schedule::ExplicitSerial, "explicit_serial");
 }
 
-TEST(AddedMass, ExplicitParallelStopsWithTheHealthChecksMessage) {
-  expectExplicitStops(core::Schedule::ExplicitParallel, "explicit_parallel");
+TEST(AddedMass, ExplicitParallelKeepsTheColumnAtRestAtItsPressure) {
+  expectRestStaysAtRest(core::Schedule::ExplicitParallel, "explicit_parallel");
+}
+
+// With the start right, the explicit schedules ring at the exact period too: the fluid is
+// compressible and the step resolves its acoustics, so the mass the lagged exchange leaves out in
+// one step (rho_f c_f dt, about 80 kg/m^2 at CFL 0.4 against the slab's 200) stays below the
+// slab's and the lag does not amplify (docs/verification-coupled.md).
+TEST(AddedMass, ExplicitSerialRingsAtTheExactPeriod) {
+  expectExactPeriod(core::Schedule::ExplicitSerial, core::AccelerationType::None, "explicit_serial");
+}
+
+TEST(AddedMass, ExplicitParallelRingsAtTheExactPeriod) {
+  expectExactPeriod(core::Schedule::ExplicitParallel, core::AccelerationType::None, "explicit_parallel");
 }
 
 }  // namespace

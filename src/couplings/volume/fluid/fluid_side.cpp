@@ -46,6 +46,10 @@ void FluidSide::start() {
 }
 
 void FluidSide::primeOutput() {
+  // The pressure the solids see before the fluid's first step (the explicit and implicit
+  // schedules start the solid first) is the equilibrium pressure with the solids placed, not
+  // the fluids' own from before the solids took their volume.
+  ice_.computeEquilibriumPressure();
   for (auto& f : fields_) {
     f.pressure.copyRegion(ice_.pressure(), f.pressure.box(), f.pressure.box());
     f.pressureForce.fill(0.0);

@@ -27,7 +27,7 @@ class FluidSide {
   /// Before the first step, with the solids' initial state in A: the solids enter as external
   /// materials and the fluids are fitted to the volume they leave free (see consumeAProduceB).
   void start();
-  /// Sets B to the fluid's current pressure and no force, D to zero (before a first step).
+  /// Sets B to the equilibrium pressure with the solids placed and no force, D to zero (before a first step).
   void primeOutput();
   /// A whole step with the A and C fields as they are (partitioned schedules); produces B and D.
   void fullStep(double dt);
