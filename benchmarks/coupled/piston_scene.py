@@ -2,9 +2,11 @@
 """Writes the adiabatic piston scene (configs/piston.yaml) at N cells: python3 piston_scene.py N [t_end].
 
 The gas starts in the quasi-static state of a piston moving at v: uniform pressure, velocity
-linear from 0 at each wall to v at the piston (one band per cell, the cell-centre value), so the
-run starts without an acoustic transient (homogeneous compression is an exact solution of Euler's
-equations for a piston at constant speed).
+linear from 0 at each wall to v at the piston (one gas region on each side with a linear velocity
+profile, `velocity_gradient`: every mesh samples the same field at its cell centres), so the run
+starts without an acoustic transient (homogeneous compression is an exact solution of Euler's
+equations for a piston at constant speed). The scene is the same for every N but `mesh.cells`:
+a study may vary `mesh.cells` or `mesh.spacing` on configs/piston.yaml directly.
 """
 import sys
 
@@ -21,8 +23,9 @@ print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
 # moves at v = 10 m/s into air (gamma 1.4, 101325 Pa, 300 K) trapped between it and the slip
 # wall at x = 1 (h0 = 0.4 m), and away from the air on 0 <= x <= 0.2 (h_L0 = 0.2 m) behind it.
 # The gas starts in the quasi-static state: uniform pressure, velocity linear from 0 at each wall
-# to v at the piston (one band per cell: this file is written by
-# `python3 benchmarks/coupled/piston_scene.py {n}`), so no acoustic transient is launched.
+# to v at the piston (a linear velocity profile in each gas region, sampled at the cell centres of
+# any mesh; this file is written by `python3 benchmarks/coupled/piston_scene.py {n}`), so no
+# acoustic transient is launched.
 # The piston is free (no prescribed motion in MPM): it decelerates under the pressure difference,
 # so the exact answer is the quasi-static one with the piston's own dynamics,
 #   h' = -v,  M v' = -(p(h) - p_L(h)),  p = p0 (h0 / h)^gamma,  p_L = p0 (h_L0 / (h_L0 + h0 - h))^gamma,
@@ -42,7 +45,7 @@ mesh:
   dim: 1
   lower: [0.0]
   upper: [1.0]
-  cells: [{n}]
+  spacing: {dx:.10g}   # {n} cells
 
 time:
   end: {t_end}
@@ -59,18 +62,23 @@ materials:
     model: {{type: linear_elastic, bulk_modulus: 140.0e9, shear_modulus: 48.0e9}}
 
 geometry:
-  # the gas, one band per cell: u = v x / h_L0 behind the piston, u = v (1 - x) / h0 ahead of it""")
-for i in range(n):
-    x0, x1 = i * dx, (i + 1) * dx
-    xc = 0.5 * (x0 + x1)
-    if x1 <= xl + 1e-12:
-        u = v * xc / xl
-    elif x0 >= xr - 1e-12:
-        u = v * (L - xc) / (L - xr)
-    else:
-        continue
-    print(f"  - {{name: gas{i}, shape: {{type: box, lo: [{x0:.10g}], hi: [{x1:.10g}]}}, material: air, "
-          f"velocity: [{u:.10g}], pressure: 101325, temperature: 300}}")
+  # the gas at rest at each wall, moving with the piston at its faces: u = v x / h_L0 behind it,
+  # u = v (1 - x) / h0 ahead of it
+  - name: gas_behind
+    shape: {{type: box, lo: [0.0], hi: [{xl}]}}
+    material: air
+    velocity: [0.0]
+    velocity_gradient: [[{v / xl:.10g}]]
+    pressure: 101325
+    temperature: 300
+  - name: gas_ahead
+    shape: {{type: box, lo: [{xr}], hi: [{L}]}}
+    material: air
+    velocity: [{v}]
+    velocity_origin: [{xr}]
+    velocity_gradient: [[{-v / (L - xr):.10g}]]
+    pressure: 101325
+    temperature: 300""")
 print(f"""  - name: piston
     shape: {{type: box, lo: [{xl}], hi: [{xr}]}}
     material: copper

@@ -7,6 +7,7 @@
 /// it against one schema (scene_schema.cpp) and fills in defaults. Every value is SI.
 /// Errors are SceneError, whose message names the file, the line, the key path, the value read
 /// and what was expected.
+#include <array>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -97,12 +98,26 @@ struct RegionSpec {
   std::string name;
   ShapeSpec shape;
   std::vector<FillSpec> fill;          // fractions sum to one
-  RealVect velocity{0, 0, 0};
+  RealVect velocity{0, 0, 0};          // the velocity at velocity_origin [m/s]
+  /// A linear initial velocity field u(x) = velocity + velocity_gradient (x - velocity_origin):
+  /// row i holds d u_i / d x_j [1/s] (zero: a uniform velocity). The fluid samples it at each
+  /// cell centre (the cell mean of a linear field), a solid at each particle.
+  std::array<RealVect, 3> velocity_gradient{};
+  RealVect velocity_origin{0, 0, 0};   // [m]
   double temperature = 300.0;
   std::optional<double> pressure;      // fluids: required
   std::optional<double> density;       // fluids: optional (else from EOS(p, T))
   IntVect particles_per_cell{2, 2, 2}; // solids: per direction
   SourceLoc where;
+  /// The initial velocity at x (velocity, plus the gradient's part when one is given).
+  [[nodiscard]] RealVect velocityAt(const RealVect& x) const {
+    RealVect u = velocity;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        u[static_cast<std::size_t>(i)] += velocity_gradient[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] *
+                                          (x[static_cast<std::size_t>(j)] - velocity_origin[static_cast<std::size_t>(j)]);
+    return u;
+  }
   bool operator==(const RegionSpec&) const = default;
 };
 

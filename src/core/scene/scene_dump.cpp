@@ -190,6 +190,12 @@ void geometry(std::ostream& o, const Scene& s) {
         o << "      - {material: " << quote(f.material) << ", volume_fraction: " << num(f.volume_fraction) << "}\n";
     }
     o << "    velocity: " << vec(r.velocity, dim) << "\n";
+    if (r.velocity_gradient != std::array<RealVect, 3>{}) {
+      o << "    velocity_origin: " << vec(r.velocity_origin, dim) << "\n";
+      o << "    velocity_gradient: [";
+      for (int i = 0; i < dim; ++i) o << (i ? ", " : "") << vec(r.velocity_gradient[static_cast<std::size_t>(i)], dim);
+      o << "]\n";
+    }
     o << "    temperature: " << num(r.temperature) << "\n";
     const MaterialSpec* first = r.fill.empty() ? nullptr : s.material(r.fill.front().material);
     if (first && first->kind == MaterialKind::Solid) {

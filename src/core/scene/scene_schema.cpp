@@ -334,7 +334,8 @@ class SchemaReader {
     if (solid && r.fill.size() > 1)
       mixture->fail(label + ": a solid cannot share a geometry object with other materials; give the solid "
                     "its own geometry object (its particles fill the shape)");
-    const std::vector<std::string> common{"name", "shape", "material", "mixture", "velocity", "temperature"};
+    const std::vector<std::string> common{"name",     "shape",           "material",          "mixture",
+                                          "velocity", "velocity_origin", "velocity_gradient", "temperature"};
     std::vector<std::string> fluidKeys = common, solidKeys = common;
     fluidKeys.insert(fluidKeys.end(), {"pressure", "density"});
     solidKeys.push_back("particles_per_cell");
@@ -344,6 +345,7 @@ class SchemaReader {
     const YamlValue shapeValue = m.required("shape");
     r.shape = readShape(shapeValue);
     r.velocity = m.vector("velocity", dim_, {0, 0, 0});                  // initial velocity [m/s]
+    readVelocityProfile(m, r);
     r.temperature = m.number("temperature", r.temperature, Range::positive());  // [K]
     if (!solid) {
       r.pressure = m.number("pressure", Range::positive());               // [Pa], required
@@ -368,6 +370,29 @@ class SchemaReader {
       checkInsideMesh(r.shape, shapeValue, label);
     }
     return r;
+  }
+
+  /// velocity_gradient: dim rows of dim numbers (row i: d u_i / d x_j [1/s]); velocity_origin: the
+  /// point [m] where the velocity is `velocity` (default: the coordinate origin).
+  void readVelocityProfile(const YamlMap& m, RegionSpec& r) const {
+    const auto g = m.get("velocity_gradient");
+    if (const auto o = m.get("velocity_origin")) {
+      if (!g) o->fail("velocity_origin needs velocity_gradient: it is the point where the velocity is `velocity`");
+      r.velocity_origin = o->vector(dim_);
+    }
+    if (!g) return;
+    const std::string expected = "expected " + std::to_string(dim_) + " rows of " + std::to_string(dim_) +
+                                 " numbers (row i: d u_i / d x_j [1/s]), e.g. " +
+                                 (dim_ == 1 ? std::string("[[-25]]") : dim_ == 2 ? std::string("[[0, 1], [0, 0]]")
+                                                                                 : std::string("[[0, 1, 0], [0, 0, 0], [0, 0, 0]]"));
+    if (!g->isList()) g->fail(expected + ", got " + g->shown());
+    const auto rows = g->list();
+    if (static_cast<int>(rows.size()) != dim_) g->fail(expected + ", got " + std::to_string(rows.size()) + " rows");
+    for (int i = 0; i < dim_; ++i) {
+      const YamlValue& row = rows[static_cast<std::size_t>(i)];
+      if (!row.isList()) row.fail(expected + "; row " + std::to_string(i + 1) + " is " + row.shown());
+      r.velocity_gradient[static_cast<std::size_t>(i)] = row.vector(dim_);
+    }
   }
 
   void checkInsideMesh(const ShapeSpec& sh, const YamlValue& where, const std::string& label) const {

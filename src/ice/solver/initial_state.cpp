@@ -112,7 +112,8 @@ void IceSolver::initialize(const core::Scene& scene) {
 
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = reg ? reg->velocity[d] : 0.0;
+      const core::RealVect u = reg ? reg->velocityAt(x) : core::RealVect{0, 0, 0};
+      for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
       if (m.external) {
         m.mass(i, j, k) = 0;
         m.spvol(i, j, k) = 1.0 / m.eos->densityFromPT(reg ? *reg->pressure : kReferencePressure, kReferenceTemperature);

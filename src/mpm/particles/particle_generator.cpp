@@ -84,7 +84,7 @@ void generateParticles(const core::Scene& scene, const core::Box& cells, Particl
             const std::int64_t subId = a + 64 * (b + 64 * c);
             const std::int64_t gid =
                 ((static_cast<std::int64_t>(s) * ncells + cellId) << 18) + subId;
-            out.addParticle(x, reg.velocity, scene.materials[m].density * vol, vol, half, m,
+            out.addParticle(x, reg.velocityAt(x), scene.materials[m].density * vol, vol, half, m,
                             reg.temperature, gid);
           }
     }

@@ -42,6 +42,25 @@ TEST(ParticleGeneration, CountsPerCell) {
   EXPECT_NEAR(solver.particles().halfSize[1][0], 0.25 / 6, 1e-15);
 }
 
+// A solid object with a linear initial velocity (velocity_gradient, issue 14): each particle
+// takes the field at its own position.
+TEST(ParticleGeneration, EachParticleTakesTheLinearVelocityAtItsPosition) {
+  core::Scene s = blockScene();
+  ASSERT_FALSE(s.geometry.empty());
+  core::RegionSpec& r = s.geometry.back();
+  r.velocity = {1, -2, 0};
+  r.velocity_origin = {0.5, 0.25, 0};
+  r.velocity_gradient = {core::RealVect{3, 0.5, 0}, core::RealVect{0, -4, 0}, core::RealVect{0, 0, 0}};
+  MpmSolver solver(s, self());
+  const ParticleSet& p = solver.particles();
+  ASSERT_GT(p.size(), 0u);
+  for (std::size_t q = 0; q < p.size(); ++q) {
+    const double dx = p.x[0][q] - 0.5, dy = p.x[1][q] - 0.25;
+    EXPECT_DOUBLE_EQ(p.v[0][q], 1 + 3 * dx + 0.5 * dy);
+    EXPECT_DOUBLE_EQ(p.v[1][q], -2 - 4 * dy);
+  }
+}
+
 TEST(ParticleGeneration, DiskCountNearArea) {
   auto s = pr::disksScene(40, "usl", 1.0);
   MpmSolver solver(s, self());

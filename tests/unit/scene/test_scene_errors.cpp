@@ -220,6 +220,26 @@ std::vector<BadScene> badScenes() {
        {"output.probes[0]: missing required key 'point'"}},
       {"boolean expected", kBase + "output: {particles: maybe}\n",
        {"output.particles: expected true or false, got 'maybe'"}},
+      {"velocity gradient with too few rows",
+       kMesh2 + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1, "
+           "velocity_gradient: [[1, 0]]}\n",
+       {"test.yaml:6:", "geometry[0].velocity_gradient: expected 2 rows of 2 numbers", "got 1 rows"}},
+      {"velocity gradient given as a vector",
+       kMesh + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: air, pressure: 1, "
+           "velocity_gradient: [2]}\n",
+       {"geometry[0].velocity_gradient[0]: expected 1 rows of 1 numbers", "row 1 is '2'", "[[-25]]"}},
+      {"velocity gradient row of the wrong length",
+       kMesh2 + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: air, pressure: 1, "
+           "velocity_gradient: [[1, 0], [0]]}\n",
+       {"geometry[0].velocity_gradient[1]", "2"}},
+      {"velocity origin without a gradient",
+       kMesh + kTime + kAir +
+           "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: air, pressure: 1, "
+           "velocity_origin: [0.5]}\n",
+       {"geometry[0].velocity_origin: velocity_origin needs velocity_gradient"}},
   };
 }
 

@@ -287,6 +287,42 @@ TEST(SceneParse, ThreeDimensionalScene) {
   EXPECT_EQ(s.geometry[1].particles_per_cell, (IntVect{1, 2, 3}));
 }
 
+// A linear initial velocity (issue 14: the piston's quasi-static gas on any mesh): u(x) = velocity +
+// velocity_gradient (x - velocity_origin), row i holding d u_i / d x_j; read, sampled and dumped.
+TEST(SceneParse, ALinearVelocityProfileIsReadSampledAndDumped) {
+  const std::string text = R"(
+mesh: {dim: 2, lower: [0, 0], upper: [1, 1], cells: [10, 10]}
+time: {end: 1}
+materials:
+  - {name: air, kind: fluid, eos: {type: ideal_gas, gamma: 1.4}}
+geometry:
+  - name: shear
+    shape: {type: box, lo: [0, 0], hi: [1, 1]}
+    material: air
+    pressure: 1e5
+    velocity: [10, -1]
+    velocity_origin: [0.6, 0.5]
+    velocity_gradient: [[-25, 2], [0, 4]]
+  - {name: plain, shape: {type: box, lo: [0, 0], hi: [0.1, 0.1]}, material: air, pressure: 1e5, velocity: [3, 4]}
+)";
+  const Scene s = parseScene(text, "v.yaml");
+  const RegionSpec& r = s.geometry.at(0);
+  EXPECT_EQ(r.velocity_origin, (RealVect{0.6, 0.5, 0}));
+  EXPECT_EQ(r.velocity_gradient[0], (RealVect{-25, 2, 0}));
+  EXPECT_EQ(r.velocity_gradient[1], (RealVect{0, 4, 0}));
+  EXPECT_EQ(r.velocity_gradient[2], (RealVect{0, 0, 0}));
+  const RealVect at = r.velocityAt({1.0, 0.75, 0.3});  // dx = (0.4, 0.25)
+  EXPECT_DOUBLE_EQ(at[0], 10 - 25 * 0.4 + 2 * 0.25);
+  EXPECT_DOUBLE_EQ(at[1], -1 + 4 * 0.25);
+  EXPECT_EQ(at[2], 0.0);
+  EXPECT_EQ(r.velocityAt(r.velocity_origin), r.velocity);
+  // Without a gradient the velocity is the same everywhere, to the bit.
+  const RegionSpec& plain = s.geometry.at(1);
+  EXPECT_EQ(plain.velocityAt({0.05, 0.07, 0}), (RealVect{3, 4, 0}));
+  EXPECT_EQ(plain.velocityAt({123.0, -4.0, 9.0}), (RealVect{3, 4, 0}));
+  expectRoundTrip(text);
+}
+
 TEST(SceneParse, DumpParsesBackToAnEqualScene) {
   expectRoundTrip(kMinimal);
   expectRoundTrip(kSolid2D);
