@@ -36,6 +36,12 @@ inline constexpr double kMaxSolidFraction = 1.0 - 1e-9;
 /// Material mass [kg] below which advection drops a material from a cell (small-mass cut-off).
 /// No test pins it.
 inline constexpr double kTraceMass = 1e-200;
+/// Fluid mass, as a share of the cell's fluid mass, below which advection drops a fluid from the
+/// cell: there its specific values (ratios of round-off in the upwind tails) grow without bound
+/// (water against air at 1.2 kg/m^3, 1600 cells: air at 1e-59 of the cell's mass with e < 0, at
+/// 1e-82 with |u| 1e40 m/s). At 1e-20 even a gas trace in water at 1 bar takes 1e-17 of the cell's
+/// volume, 3e-13 of the pressure (IceWaterAir.InterfaceAdvectionKeepsPressureUniform, 1e-10).
+inline constexpr double kNegligibleMassFraction = 1e-20;
 /// The largest share of its mass a donor cell may lose through all its faces in one advection
 /// step (positivity cap on the outflow). No test pins it.
 inline constexpr double kMaxOutflowFraction = 0.9;

@@ -218,6 +218,9 @@ struct IceOptions {
   // docs/ice.md) or "average" (the density-weighted average of the cell pressures).
   std::string face_pressure = "riemann";
   double shock_viscosity_quadratic = 0;
+  // Traces: a fluid below this fraction of a cell's fluid mass is held at its carried volume when
+  // the cell's pressure is below its own (docs/ice.md "Traces"); 0 turns the rule off.
+  double trace_mass_fraction = 1e-6;
   bool operator==(const IceOptions&) const = default;
 };
 

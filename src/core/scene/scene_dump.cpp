@@ -264,7 +264,8 @@ void options(std::ostream& o, const Scene& s) {
     << num(i.solver_tolerance) << "\n  solver_max_iterations: " << i.solver_max_iterations
     << "\n  pressure_iterations: " << i.max_pressure_iterations << "\n  pressure_tolerance: "
     << num(i.pressure_tolerance) << "\n  shock_viscosity: {linear: " << num(i.shock_viscosity_linear)
-    << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  face_pressure: " << i.face_pressure << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
+    << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  face_pressure: " << i.face_pressure
+    << "\n  trace_mass_fraction: " << num(i.trace_mass_fraction) << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
     << "\n    heat: " << num(i.exchange_heat) << "\n";
   if (!i.exchange_pairs.empty()) {
     o << "    pairs:\n";

@@ -559,7 +559,7 @@ class SchemaReader {
     const YamlMap m = v.map();
     m.allow({"advection", "limiter", "pressure_solver", "linear_solver", "solver_tolerance",
              "solver_max_iterations", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
-             "face_pressure"});
+             "face_pressure", "trace_mass_fraction"});
     IceOptions& o = s_.ice;
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
@@ -570,6 +570,7 @@ class SchemaReader {
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));
     o.pressure_tolerance = m.number("pressure_tolerance", o.pressure_tolerance, Range::positive());
     o.face_pressure = m.choice("face_pressure", o.face_pressure, {"riemann", "average"}, "face pressure");
+    o.trace_mass_fraction = m.number("trace_mass_fraction", o.trace_mass_fraction, Range::closed(0, 0.01));
     if (const auto sv = m.get("shock_viscosity")) {
       const YamlMap q = sv->map();
       q.allow({"linear", "quadratic"});

@@ -184,6 +184,11 @@ void IceSolver::advectFluids() {
     }
   }
 
+  // The cells' fluid mass after advection, for the negligible-trace cut-off below.
+  adv_.fluidMass.assign(npts, 0.0);
+  for (int r = 0; r < nm; ++r)
+    if (!st_.mat[r].external)
+      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += adv_.mat[r].conserved[kMass][c];
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     if (m.external) continue;
@@ -195,7 +200,11 @@ void IceSolver::advectFluids() {
     const double* uL[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
     for (const std::int64_t c : ownedCells_) {
       const double mass = a[kMass][c];
-      if (!(mass > kTraceMass)) {  // absent (traces below kTraceMass kg are dropped)
+      // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
+      // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
+      // energy they held is audited).
+      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
+        if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
         for (int d = 0; d < 3; ++d) u[d][c] = uL[d][c];
         e[c] = eL[c];
@@ -221,6 +230,13 @@ void IceSolver::advectFluids() {
       }
       ms[c] = mass;
       v[c] = a[kVolume][c] * inv;
+      // The limited face volumes can drain more volume than a trace holds when its neighbours carry
+      // far larger specific volumes (held traces, docs/ice.md "Traces"): keep the Lagrangian value
+      // (specific volume is not a conserved quantity; the equilibrium pressure sets it again).
+      if (!(v[c] > 0)) {
+        v[c] = vL[c];
+        ++fallbacks_;
+      }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
     }
   }

@@ -6,14 +6,20 @@
 
 namespace mpmice::ice {
 
-EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations)
-    : eos_(std::move(eos)), tol_(tolerance), maxIt_(maxIterations) {}
+EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
+                                         std::vector<bool> fluid, double traceMassFraction)
+    : eos_(std::move(eos)), tol_(tolerance), maxIt_(maxIterations), fluid_(std::move(fluid)),
+      traceY_(traceMassFraction) {
+  fluid_.resize(eos_.size(), false);
+}
 
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std::int64_t>& cells,
                                                            const std::vector<const double*>& rho,
                                                            const std::vector<const double*>& e, double* p,
-                                                           const std::vector<double*>& rhoMicro, double* iters) {
+                                                           const std::vector<double*>& rhoMicro, double* iters,
+                                                           const std::vector<const double*>* carriedVolume) {
   const std::size_t nm = eos_.size();
+  held_.clear();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<EquilibriumFailure> failures;
   // Records cell c (active slot a) as failed after `iterations`.
@@ -62,13 +68,53 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
   std::size_t na = active_.size();
   floor_.assign(na, -inf);
   floorMat_.assign(na, -1);
+  // The trace rule: a fluid below traceY_ of the cell's fluid mass, with an admissible carried
+  // state, is held at its carried volume below its own pressure p_own (pHold_), and its floor
+  // (below p_own) does not bound the cell's interval.
+  const bool traces = traceY_ > 0 && carriedVolume != nullptr && na > 0;
+  if (traces) {
+    std::int64_t n = 0;
+    for (const std::int64_t c : active_) n = std::max(n, c + 1);
+    pHold_.resize(nm);
+    rhoHold_.resize(nm);
+    for (std::size_t r = 0; r < nm; ++r) {
+      if (static_cast<std::int64_t>(pHold_[r].size()) < n) {
+        pHold_[r].resize(static_cast<std::size_t>(n));
+        rhoHold_[r].resize(static_cast<std::size_t>(n));
+      }
+    }
+    all_ = active_;
+    for (std::size_t r = 0; r < nm; ++r) {
+      double* ph = pHold_[r].data();
+      double* rh = rhoHold_[r].data();
+      for (const std::int64_t c : active_) ph[c] = -inf;
+      if (!fluid_[r]) continue;
+      const double* vc = (*carriedVolume)[r];
+      for (const std::int64_t c : active_) {
+        const double m = rho[r][c];
+        if (!(m > 0)) continue;
+        double mf = 0;
+        for (std::size_t s = 0; s < nm; ++s)
+          if (fluid_[s]) mf += rho[s][c];
+        if (!(m < traceY_ * mf) || !(vc[c] > 0) || !std::isfinite(vc[c])) continue;
+        const double rc = 1.0 / vc[c];
+        double po, pf;
+        eos_[r]->pressure(1, &rc, &e[r][c], &po);
+        eos_[r]->pressureFloor(1, &e[r][c], &pf);
+        if (std::isfinite(po) && po > pf) ph[c] = po, rh[c] = rc;  // an admissible carried state
+      }
+    }
+  }
   for (std::size_t r = 0; r < nm; ++r) {
     ea_.resize(na);
     pf_.resize(na);
     for (std::size_t a = 0; a < na; ++a) ea_[a] = e[r][active_[a]];
     eos_[r]->pressureFloor(na, ea_.data(), pf_.data());
-    for (std::size_t a = 0; a < na; ++a)
+    const double* ph = traces ? pHold_[r].data() : nullptr;
+    for (std::size_t a = 0; a < na; ++a) {
+      if (ph && ph[active_[a]] > -inf) continue;  // a held trace is admissible at every pressure
       if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
+    }
   }
   {
     std::size_t keep = 0;
@@ -106,6 +152,12 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       const double* er = e[r];
       for (std::size_t a = 0; a < na; ++a) ea_[a] = er[active_[a]];
       eos_[r]->density(na, pa_.data(), ea_.data(), ra_.data(), da_.data());
+      if (traces) {
+        const double* ph = pHold_[r].data();
+        const double* rh = rhoHold_[r].data();
+        for (std::size_t a = 0; a < na; ++a)
+          if (pa_[a] < ph[active_[a]]) ra_[a] = rh[active_[a]], da_[a] = 0.0;
+      }
       const double* rr = rho[r];
       double* rm = rhoMicro[r];
       for (std::size_t a = 0; a < na; ++a) {
@@ -176,6 +228,10 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     floor_.resize(na);
     floorMat_.resize(na);
   }
+  if (traces)
+    for (const std::int64_t c : all_)
+      for (std::size_t r = 0; r < nm; ++r)
+        if (p[c] < pHold_[r][c]) held_.emplace_back(static_cast<int>(r), c);
   return failures;
 }
 

@@ -14,8 +14,19 @@
 /// state at its energy (e.g. e <= 0), or f > 0 all the way down to the floor (the materials
 /// cannot fill the cell at any admissible pressure), or no convergence in the iteration limit.
 /// A single material without an external partner takes p = EOS(rho, e) directly (0 iterations).
+///
+/// Traces (ice.trace_mass_fraction, docs/ice.md "Traces"): a fluid whose mass is below the
+/// fraction Y_t of the cell's fluid mass may be compressed by the cell's pressure but not pulled
+/// beyond the specific volume it carries into the step. For p below its own pressure at that
+/// volume, p_own = EOS(1 / v_carried, e), its volume is held at v_carried (d rho / d p = 0), and
+/// its pressure floor does not bound the cell's admissible interval. Above p_own it is an
+/// ordinary material, so a cell in pressure equilibrium is solved exactly as without the rule.
+/// Without it, a trace of gas (1e-15 of a cell's mass) beside water in tension (p < 0) must fill
+/// the water's volume deficit at p > 0: its specific volume grows to 1e8 m^3/kg and the cell
+/// blows up a few hundred steps later.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ice/eos/eos.h"
@@ -38,18 +49,36 @@ struct EquilibriumFailure {
 
 class EquilibriumPressure {
  public:
-  EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations);
+  /// fluid[r]: material r may be a trace (external materials never are); traceMassFraction: Y_t
+  /// (0: no trace rule).
+  EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
+                      std::vector<bool> fluid = {}, double traceMassFraction = 0.0);
 
   /// cells: linear indices into the arrays; rho[r], e[r]: per material; p: in guess, out result;
-  /// rhoMicro[r]: out; iters: out (as double, it is written to a field). Returns the failures.
+  /// rhoMicro[r]: out; iters: out (as double, it is written to a field). carriedVolume[r] (may
+  /// alias rhoMicro[r]: it is read first): each material's specific volume carried into the step,
+  /// needed by the trace rule (nullptr: no trace rule). Returns the failures.
   std::vector<EquilibriumFailure> solve(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                                         const std::vector<const double*>& e, double* p,
-                                        const std::vector<double*>& rhoMicro, double* iters);
+                                        const std::vector<double*>& rhoMicro, double* iters,
+                                        const std::vector<const double*>* carriedVolume = nullptr);
+
+  [[nodiscard]] double traceMassFraction() const { return traceY_; }
+
+  /// The (material, cell) pairs the last solve() held at their carried volume (traces below their
+  /// own pressure): their compressibility is 0 in the step.
+  [[nodiscard]] const std::vector<std::pair<int, std::int64_t>>& heldTraces() const { return held_; }
 
  private:
   std::vector<const Eos*> eos_;
   double tol_;
   int maxIt_;
+  std::vector<bool> fluid_;
+  double traceY_;
+  // Trace rule per material, indexed by cell: p_own (-inf: not held) and the carried density.
+  std::vector<std::vector<double>> pHold_, rhoHold_;
+  std::vector<std::int64_t> all_;
+  std::vector<std::pair<int, std::int64_t>> held_;
   // Scratch over the active cells.
   std::vector<std::int64_t> active_;
   std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_;

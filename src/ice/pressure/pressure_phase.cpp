@@ -1,6 +1,7 @@
 // IceSolver phases 2 and 5 (and the units computeVolumeFluxes, explicitPressureIncrement): the equilibrium pressure of each cell and the explicit pressure
 // increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <stdexcept>
@@ -32,6 +33,41 @@ void IceSolver::computeEquilibriumPressure() {
       if (vext > kMaxSolidFraction * V) clip[a] = kMaxSolidFraction * V / vext;
     }
   }
+  // Traces (ice.trace_mass_fraction, docs/ice.md "Traces") without an admissible state at their
+  // energy (a gas at e <= 0: advection's round-off in masses of 1e-60 kg) take the temperature of
+  // the cell's heaviest fluid, which pays for the change (the total energy is unchanged).
+  if (const double Y = equil_->traceMassFraction(); Y > 0 && nm > 1) {
+    std::vector<std::int64_t> tc;
+    std::vector<double> te, tf;
+    for (MaterialState& m : st_.mat) {
+      if (m.external) continue;
+      tc.clear();
+      te.clear();
+      for (const std::int64_t c : ownedCells_) {
+        const double mr = m.mass.data()[c];
+        if (!(mr > 0)) continue;
+        double mf = 0;
+        for (const MaterialState& s : st_.mat)
+          if (!s.external) mf += s.mass.data()[c];
+        if (mr < Y * mf) tc.push_back(c), te.push_back(m.eint.data()[c]);
+      }
+      tf.resize(tc.size());
+      m.eos->pressureFloor(tc.size(), te.data(), tf.data());
+      for (std::size_t a = 0; a < tc.size(); ++a) {
+        if (tf[a] < std::numeric_limits<double>::infinity()) continue;  // admissible
+        const std::int64_t c = tc[a];
+        MaterialState* dom = nullptr;
+        for (MaterialState& s : st_.mat)
+          if (!s.external && (!dom || s.mass.data()[c] > dom->mass.data()[c])) dom = &s;
+        const double vd = dom->spvol.data()[c], T = dom->eos->temperature(1.0 / vd, dom->eint.data()[c]);
+        if (!(T > 0) || !(vd > 0)) continue;  // the health check names a broken heaviest fluid
+        const double vt = m.spvol.data()[c];
+        const double e1 = m.eos->energyFromTemperature(vt > 0 && std::isfinite(vt) ? 1.0 / vt : 1.0 / vd, T);
+        dom->eint.data()[c] -= m.mass.data()[c] * (e1 - m.eint.data()[c]) / dom->mass.data()[c];
+        m.eint.data()[c] = e1;
+      }
+    }
+  }
   std::vector<const double*> rho, e;
   std::vector<double*> rhoMicro;
   for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile
@@ -45,7 +81,9 @@ void IceSolver::computeEquilibriumPressure() {
     e.push_back(m.eint.data());
     rhoMicro.push_back(m.spvol.data());
   }
-  const auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data());
+  // spvol holds each material's carried specific volume on entry (the trace rule reads it first).
+  const std::vector<const double*> carried(rhoMicro.begin(), rhoMicro.end());
+  const auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data(), &carried);
   const int anyFail = comm_.max(failures.empty() ? 0 : 1);
   if (anyFail) {
     std::ostringstream os;
@@ -115,6 +153,9 @@ void IceSolver::computeEquilibriumPressure() {
       ka[c] = 1.0 / (rm * c2[a]);
     }
   }
+  // A trace held at its carried volume takes no share of the cell's volume change (and so does no
+  // p dV work) in this step: it is incompressible below its own pressure.
+  for (const auto& [r, c] : equil_->heldTraces()) st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = 0.0;
 
   double* pe = st_.pressEq.data();
   const double* p = st_.press.data();

@@ -51,7 +51,8 @@ std::string cellViolation(const IceSolver& s, int i, int j, int k, std::int64_t 
     if (!(th > kPresentFraction) || !(mass > 0)) continue;  // ranges only where the fluid is present
     const double T = m.eos->temperature(1.0 / v, e);
     if (!(T > 0 && T <= core::kMaxTemperature)) return bad("temperature [K]", who, T, "in (0, 1e9]");
-    const double c2 = v / m.kappa.data()[c];
+    // kappa = 0: a trace held at its carried volume this step (incompressible, docs/ice.md "Traces").
+    const double c2 = m.kappa.data()[c] == 0.0 ? 1.0 : v / m.kappa.data()[c];
     if (!(c2 > 0 && c2 < core::kMaxSoundSpeed * core::kMaxSoundSpeed))
       return bad("sound speed [m/s]", who, c2 > 0 ? std::sqrt(c2) : c2, "in (0, speed of light)");
   }
@@ -93,7 +94,7 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
       ok &= std::isfinite(mass) & (mass >= 0) & std::isfinite(e) & std::isfinite(v) & (!(mass > 0) | (v > 0));
       const double eT = cold ? e - m.eos->coldEnergy(1.0 / v) : e;
       const bool present = (th[a] > kPresentFraction) & (mass > 0);
-      ok &= (!present) | ((eT > 0) & (eT <= cvTmax) & (ka[a] > 0) & (v < c2max * ka[a]));
+      ok &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | ((ka[a] > 0) & (v < c2max * ka[a]))));
     }
   }
   for (int a = 0; a < n; ++a) ok &= std::abs(sum[static_cast<std::size_t>(a)] - 1.0) <= kFractionSumTolerance;

@@ -77,7 +77,10 @@ void IceSolver::initialize(const core::Scene& scene) {
     eos.push_back(m.eos.get());
   }
   st_.allocate(owned_, stored, dim);
-  equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations);
+  std::vector<bool> fluid;
+  for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);
+  equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations, fluid,
+                                                 o.trace_mass_fraction);
   forEach(owned_, [&](int i, int j, int k) { ownedCells_.push_back(stored.index(i, j, k)); });
 
   // ---- exchange coefficients

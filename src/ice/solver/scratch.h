@@ -41,6 +41,7 @@ struct AdvectionScratch {
   };
   std::vector<Material> mat;
   core::Field outflowScale;  // one component per material: scale of each donor's outflow
+  std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
 };
 
 }  // namespace mpmice::ice

@@ -3,7 +3,7 @@
 // solution, the fitted order, the overshoot behind each shock (% of the jump) and the stationary
 // contact's velocity. scripts/ice_shock_sweep.sh runs it for every setting (docs/ice.md).
 //   ice_shock_sweep [--advection A] [--limiter L] [--pressure P] [--face-pressure riemann|average]
-//                   [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air]
+//                   [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     else if (k == "--cfl") o.cfl = std::atof(v.c_str());
     else if (k == "--cases") cases = v;
     else if (k == "--face-pressure") o.facePressure = v;
+    else if (k == "--trace-mass-fraction") setenv("ICE_TRACE_MASS_FRACTION", v.c_str(), 1);  // water_air only
     else if (k == "--cells") {
       cells.clear();
       std::stringstream ss(v);
