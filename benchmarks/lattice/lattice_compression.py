@@ -26,6 +26,16 @@ around the specimen, at each --viscosities value. Writes lattice_filled_stress_s
 lattice_filled_summary.csv and lattice_filled_stress_strain.png.
 
     scripts/python benchmarks/lattice/lattice_compression.py --study filled --build build --out output/lattice_filled
+
+--study 3d: the slides' cell itself (configs/lattice/lattice3d_a45.yaml: a cube of edge a with three
+orthogonal pores of diameter d, an eighth of a 2 x 2 x 2 specimen by three mirror planes), for each
+--cells value of a (4.5, 4.0, 3.5 mm: the a = 4.0 and 3.5 mm scenes are the a = 4.5 mm one with the
+cube, the pores' centres, the mesh and the plate moved), at --mesh3d and the shipped 1000 1/s, to
+--end-strain (cost). stress = plate force / a^2, strain = plate travel / a. Writes
+lattice3d_stress_strain.csv and lattice3d_summary.csv (plateau and first yield beside the 2D curve
+of --compare2d, default docs/lattice_summary.csv, and Gibson-Ashby).
+
+    scripts/python benchmarks/lattice/lattice_compression.py --study 3d --build build --out output/lattice3d
 """
 import argparse
 import glob
@@ -296,12 +306,93 @@ def filled_study(args):
     gnuplot(gp, png)
 
 
+def scene_3d(a, h, rate, end_strain):
+    """configs/lattice/lattice3d_a45.yaml with the cell edge a, mesh h, plate at rate x a."""
+    s = yaml.safe_load(open(os.path.join(ROOT, "configs", "lattice", "lattice3d_a45.yaml")))
+    tag = f"{a * 1e4:.0f}"
+    s["scene"] = f"lattice3d_a{tag}"
+    s["description"] = f"Open-cell cubic lattice (pores d = 3 mm) a = {a * 1e3:.1f} mm, eighth model, 3D"
+    room, plate_t = 1.5e-3, 0.5e-3                    # the shipped scene's room beside and the plate's thickness
+    up = lambda v: h * math.ceil(v / h - 1e-9)
+    s["mesh"]["spacing"] = [h, h, h]
+    s["mesh"]["upper"] = [up(a + room), up(a + plate_t + 0.5e-3), up(a + room)]
+    lattice = next(g for g in s["geometry"] if g["name"] == "lattice")
+    box, *pores = lattice["shape"]["shapes"]
+    box["hi"] = [a, a, a]
+    for c in pores:
+        c["center"] = [0.5 * a] * 3
+    plate = next(g for g in s["geometry"] if g["name"] == "plate")
+    plate["shape"] = {"type": "box", "lo": [0.0, a, 0.0], "hi": [s["mesh"]["upper"][0], a + plate_t, s["mesh"]["upper"][2]]}
+    plate["velocity"] = [0.0, -rate * a, 0.0]
+    s["time"]["end"] = end_strain / rate
+    s["output"]["interval"] = 0.01 / rate
+    s["output"]["directory"] = s["scene"]
+    return s
+
+
+def study_3d(args):
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    exe = os.path.join(os.path.abspath(args.build), "mpm_solver", "mpm_solver")
+    cells = [float(v) * 1e-3 for v in args.cells.split(",")]
+    rho_slides = {4.5: 0.37, 4.0: 0.27, 3.5: 0.16}
+    two_d = {}
+    if os.path.exists(args.compare2d):
+        with open(args.compare2d) as f:
+            keys = f.readline().strip().split(",")
+            for line in f:
+                r = dict(zip(keys, line.strip().split(",")))
+                two_d[round(float(r["a_mm"]), 1)] = r
+    cases, commands = [], []
+    for a in cells:
+        s = scene_3d(a, args.mesh3d, 1000.0, args.end_strain)
+        path = os.path.join(out, s["scene"] + ".yaml")
+        yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
+        log = os.path.join(out, s["scene"] + ".log")
+        cases.append((s["scene"], a, os.path.join(out, s["output"]["directory"]), log))
+        commands.append(([exe, path], out, log))
+    if not args.skip_run:
+        run_all(args.jobs, commands)
+    rows, summary = [], []
+    for name, a, directory, log in cases:
+        if len(glob.glob(os.path.join(directory, "*.h5"))) < 3:
+            print(f"{name}: fewer than 3 outputs in {directory}, left out")
+            continue
+        travel, force, vol0 = curve(directory, name)
+        strain, stress = travel / a, force / (a * a)
+        steps, wall, rate, particles = parse_log(open(log).read())
+        rho = rho_slides.get(round(a * 1e3, 1), float("nan"))
+        r2 = two_d.get(round(a * 1e3, 1), {})
+        plateau = band_mean(strain, stress, 0.2, 0.4) if strain[-1] >= 0.4 else float("nan")
+        rows += [(name, a, e, st) for e, st in zip(strain, stress)]
+        summary.append({"scene": name, "a_mm": a * 1e3, "rho_rel_slides": rho, "rho_rel_particles": vol0 / a ** 3,
+                        "first_yield_MPa": band_mean(strain, stress, 0.04, 0.12) / 1e6, "plateau_MPa": plateau / 1e6,
+                        "plateau_2d_MPa": float(r2.get("plateau_MPa", "nan")),
+                        "first_yield_2d_MPa": float(r2.get("first_yield_MPa", "nan")),
+                        "gibson_ashby_MPa": 0.3 * rho ** 1.5 * SIGMA_Y / 1e6,
+                        "peak_to_12pct_MPa": float(np.max(stress[strain <= 0.12])) / 1e6,
+                        "end_strain": float(strain[-1]), "particles": particles, "steps": steps, "wall_s": wall})
+    with open(os.path.join(out, "lattice3d_stress_strain.csv"), "w") as f:
+        f.write("scene,a_mm,strain,stress_MPa\n")
+        for name, a, e, st in rows:
+            f.write(f"{name},{a * 1e3:.1f},{e:.6f},{st / 1e6:.6f}\n")
+    if not summary:
+        return
+    keys = list(summary[0].keys())
+    with open(os.path.join(out, "lattice3d_summary.csv"), "w") as f:
+        f.write(",".join(keys) + "\n")
+        for r in summary:
+            f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
+    for r in summary:
+        print(", ".join(f"{k} {r[k]:.4g}" if isinstance(r[k], float) else f"{k} {r[k]}" for k in keys))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--out", default="output/lattice")
     ap.add_argument("--skip-run", action="store_true", help="read the existing outputs")
-    ap.add_argument("--study", choices=["closed", "filled"], default="closed",
+    ap.add_argument("--study", choices=["closed", "filled", "3d"], default="closed",
                     help="closed: the shipped scenes; filled: open-cell variants, empty and filled")
     ap.add_argument("--mesh", type=float, default=1.5e-4, help="filled study: mesh spacing [m]")
     ap.add_argument("--rate", type=float, default=2000.0, help="filled study: nominal strain rate [1/s]")
@@ -309,9 +400,16 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="filled study: runs at a time")
     ap.add_argument("--only", default="", help="filled study: run only these scenes (comma-separated names); "
                     "the others' outputs are read where present")
+    ap.add_argument("--mesh3d", type=float, default=2.5e-4, help="3d study: mesh spacing [m]")
+    ap.add_argument("--cells", default="4.5", help="3d study: cell edges a [mm], comma-separated")
+    ap.add_argument("--end-strain", type=float, default=0.7, help="3d study: nominal strain at the end")
+    ap.add_argument("--compare2d", default=os.path.join(ROOT, "docs", "lattice_summary.csv"),
+                    help="3d study: the 2D summary to compare with")
     args = ap.parse_args()
     if args.study == "filled":
         return filled_study(args)
+    if args.study == "3d":
+        return study_3d(args)
     cwd = os.getcwd()
     os.makedirs(args.out, exist_ok=True)
     rows, summary = [], []

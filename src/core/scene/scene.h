@@ -190,6 +190,10 @@ struct MpmOptions {
   // coupled energy budget closes to round-off) or "auto" (grid in a volume-coupled run, material
   // otherwise). docs/mpm.md "Stress work".
   std::string stress_work = "auto";
+  // A particle that leaves the mesh through an `outflow` face: "remove" (it leaves the simulation,
+  // counted and reported, its mass, momentum and energy booked as outflow) or "error" (the run
+  // stops). Leaving through any other face is always an error.
+  std::string outflow_particles = "remove";
   bool operator==(const MpmOptions&) const = default;
 };
 

@@ -257,7 +257,7 @@ void options(std::ostream& o, const Scene& s) {
   const MpmOptions& m = s.mpm;
   o << "mpm:\n  shape_function: " << m.shape_function << "\n  update: " << m.update << "\n  flip: " << num(m.flip)
     << "\n  damping: " << num(m.damping) << "\n  sort_particles: " << flag(m.sort_particles)
-    << "\n  stress_work: " << m.stress_work << "\n";
+    << "\n  stress_work: " << m.stress_work << "\n  outflow_particles: " << m.outflow_particles << "\n";
   const IceOptions& i = s.ice;
   o << "ice:\n  advection: " << i.advection << "\n  limiter: " << i.limiter << "\n  pressure_solver: "
     << i.pressure_solver << "\n  linear_solver: " << i.linear_solver << "\n  solver_tolerance: "

@@ -544,7 +544,7 @@ class SchemaReader {
   // ----------------------------------------------------------------------- solver options
   void readMpm(const YamlValue& v) {
     const YamlMap m = v.map();
-    m.allow({"shape_function", "update", "flip", "damping", "sort_particles", "stress_work"});
+    m.allow({"shape_function", "update", "flip", "damping", "sort_particles", "stress_work", "outflow_particles"});
     MpmOptions& o = s_.mpm;
     o.shape_function = m.choice("shape_function", o.shape_function, {"linear", "gimp", "bspline2", "bspline3"},
                                 "shape function");
@@ -553,6 +553,8 @@ class SchemaReader {
     o.damping = m.number("damping", o.damping, Range::nonNegative());       // [1/s]
     o.sort_particles = m.boolean("sort_particles", o.sort_particles);
     o.stress_work = m.choice("stress_work", o.stress_work, {"auto", "material", "grid"}, "stress work");
+    o.outflow_particles =
+        m.choice("outflow_particles", o.outflow_particles, {"remove", "error"}, "particles leaving through an outflow face");
   }
 
   void readIce(const YamlValue& v) {

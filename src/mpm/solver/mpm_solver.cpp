@@ -599,57 +599,116 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   const core::Mesh& mesh = scene_.mesh;
   const int dim = mesh.dim();
   const std::size_t n = p_.size();
-  sortKey_.resize(n);
-  // 1. Cell of every particle; one that left the mesh stops the run on every rank.
+  // 1. Particles outside the mesh. One that left through an `outflow` face leaves the simulation
+  //    (mpm.outflow_particles: remove): counted, its mass, momentum and energy booked as outflow
+  //    and reported; one outside any other face (or through an outflow face with "error", or not
+  //    finite) stops the run on every rank.
+  const int nmat = static_cast<int>(scene_.materials.size());
+  const bool removeAtOutflow = scene_.mpm.outflow_particles == "remove";
   long long outside = -1;
+  int outsideFace = -1;
   double where[3] = {0, 0, 0};
+  std::vector<char> keep;                  // only filled when a particle leaves
+  std::vector<double> removed;             // per (face, material): count, mass; only when one leaves
+  for (std::size_t i = 0; i < n; ++i) {
+    int face = -1;  // -1 inside; 0..5 the face crossed; 6 not finite
+    for (int d = 0; d < dim && face < 0; ++d) {
+      const double q = (p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d);
+      if (!std::isfinite(q)) face = 6;
+      else if (q < 0.0) face = 2 * d;
+      else if (!(q < mesh.cells()[d])) face = 2 * d + 1;
+    }
+    if (face < 0) continue;
+    if (face < 6 && removeAtOutflow && scene_.boundary[face].type == core::BoundaryType::Outflow) {
+      if (keep.empty()) {
+        keep.assign(n, 1);
+        removed.assign(2 * 6 * nmat, 0.0);
+      }
+      keep[i] = 0;
+      const int m = p_.material[i];
+      const double mass = p_.mass[i];
+      ParticleOutflow& o = ledger_.outflow;
+      o.count += 1;
+      o.mass += mass;
+      double v2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        o.momentum[d] += mass * p_.v[d][i];
+        v2 += p_.v[d][i] * p_.v[d][i];
+      }
+      o.kinetic += 0.5 * mass * v2;
+      o.strain += p_.work[i];
+      if (models_[m]) o.heat += mass * scene_.materials[m].specific_heat * p_.temperature[i];
+      removed[2 * (face * nmat + m)] += 1;
+      removed[2 * (face * nmat + m) + 1] += mass;
+      continue;
+    }
+    if (outside < 0) {
+      outside = p_.id[i];
+      outsideFace = face;
+      for (int e = 0; e < 3; ++e) where[e] = p_.x[e][i];
+    }
+  }
+  std::vector<double> flags{outside >= 0 ? 1.0 : 0.0, keep.empty() ? 0.0 : 1.0};
+  comm_.sumInPlace(flags);
+  if (flags[0] > 0) {
+    std::ostringstream os;
+    if (outside >= 0) {
+      os << "particle " << outside << " at (" << where[0] << ", " << where[1] << ", " << where[2] << ") ";
+      if (outsideFace < 6)
+        os << "left the mesh (" << mesh.describe() << ") through the " << core::boundaryFaceName(outsideFace) << " face ("
+           << core::toString(scene_.boundary[outsideFace].type) << ")";
+      else
+        os << "has a position that is not finite";
+    } else {
+      os << "a particle on another rank left the mesh (" << mesh.describe() << ")";
+    }
+    os << " at t = " << time_ << ", step " << step_
+       << ": it is outside the mesh. Enlarge the mesh, or make that face a wall (noslip_wall / symmetry)";
+    if (!removeAtOutflow) os << ", or let particles leave through outflow faces (mpm.outflow_particles: remove)";
+    else os << ", or make it an outflow face (particles leaving through it are removed, mpm.outflow_particles)";
+    throw std::runtime_error(os.str());
+  }
+  removedLastStep_ = 0;
+  removalReport_.clear();
+  if (flags[1] > 0) {
+    if (removed.empty()) removed.assign(2 * 6 * nmat, 0.0);
+    comm_.sumInPlace(removed);
+    std::ostringstream os;
+    os << "mpm: at t = " << time_ << " s (step " << step_ << ")";
+    const char* sep = " ";
+    for (int f = 0; f < 6; ++f)
+      for (int m = 0; m < nmat; ++m) {
+        const double cnt = removed[2 * (f * nmat + m)];
+        if (cnt == 0) continue;
+        removedLastStep_ += static_cast<long long>(cnt);
+        os << sep << static_cast<long long>(cnt) << " particle(s) of '" << scene_.materials[m].name << "' (mass "
+           << removed[2 * (f * nmat + m) + 1] << " kg) left through the outflow face "
+           << core::boundaryFaceName(f);
+        sep = "; ";
+      }
+    os << " and are removed (mpm.outflow_particles: remove)";
+    if (comm_.root()) removalReport_ = os.str();
+    if (!keep.empty()) {
+      p_.compact(keep);
+      p_.updateMaterialRanges(nmat);
+    }
+  }
+  const std::size_t nk = p_.size();
+  sortKey_.resize(nk);
   std::vector<int> dest;  // only filled on several ranks
   const core::Box all = mesh.cellBox();
   const int me = comm_.rank();
   bool moving = false;
-  if (comm_.size() > 1) dest.assign(n, me);
-  // One rank, no sort this step: only the check that every particle is inside the mesh (the cell
-  // test of the loop below without the cell: floor(q) < 0 <=> q < 0, floor(q) >= n <=> q >= n).
+  if (comm_.size() > 1) dest.assign(nk, me);
   const bool needKeys = comm_.size() > 1 || forceSort || !p_.groupedByMaterial();
-  if (!needKeys) {
-    for (std::size_t i = 0; i < n && outside < 0; ++i)
-      for (int d = 0; d < dim; ++d) {
-        const double q = (p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d);
-        if (!(q >= 0.0 && q < mesh.cells()[d])) {
-          outside = p_.id[i];
-          for (int e = 0; e < 3; ++e) where[e] = p_.x[e][i];
-          break;
-        }
-      }
-  }
-  for (std::size_t i = 0; needKeys && i < n; ++i) {
+  for (std::size_t i = 0; needKeys && i < nk; ++i) {
     int c[3] = {0, 0, 0};
-    for (int d = 0; d < dim; ++d) {
-      c[d] = cellCoordinate(mesh, d, p_.x[d][i]);
-      if (c[d] < 0 || c[d] >= mesh.cells()[d] || !std::isfinite(p_.x[d][i])) {
-        if (outside < 0) {
-          outside = p_.id[i];
-          for (int e = 0; e < 3; ++e) where[e] = p_.x[e][i];
-        }
-        c[d] = 0;
-      }
-    }
+    for (int d = 0; d < dim; ++d) c[d] = std::clamp(cellCoordinate(mesh, d, p_.x[d][i]), 0, mesh.cells()[d] - 1);
     sortKey_[i] = static_cast<std::uint64_t>(all.index(c[0], c[1], c[2]));
     if (comm_.size() > 1) {
       dest[i] = decomp_.ownerOfCell(c[0], c[1], c[2]);
       if (dest[i] != me) moving = true;
     }
-  }
-  if (comm_.max(outside >= 0 ? 1 : 0) > 0) {
-    std::ostringstream os;
-    if (outside >= 0)
-      os << "particle " << outside << " at (" << where[0] << ", " << where[1] << ", " << where[2]
-         << ") ";
-    else
-      os << "a particle on another rank ";
-    os << "is outside the mesh (" << mesh.describe() << ") at t = " << time_ << ", step " << step_
-       << ": enlarge the mesh, or make that face a wall (noslip_wall / symmetry)";
-    throw std::runtime_error(os.str());
   }
   // 2. Migration to the owning ranks.
   bool received = false;
@@ -657,11 +716,11 @@ void MpmSolver::migrateAndSort(bool forceSort) {
     const int np = comm_.size();
     const std::size_t ps = ParticleSet::packedSize();
     std::vector<std::vector<double>> out(np);
-    std::vector<char> keep(n, 1);
-    for (std::size_t i = 0; i < n; ++i)
+    std::vector<char> keepHere(nk, 1);
+    for (std::size_t i = 0; i < nk; ++i)
       if (dest[i] != me) {
         p_.pack(i, out[dest[i]]);
-        keep[i] = 0;
+        keepHere[i] = 0;
       }
     std::vector<int> scount(np), rcount(np), sdisp(np), rdisp(np);
     std::vector<double> sbuf;
@@ -680,9 +739,9 @@ void MpmSolver::migrateAndSort(bool forceSort) {
     MPI_Alltoallv(sbuf.data(), scount.data(), sdisp.data(), MPI_DOUBLE, rbuf.data(), rcount.data(),
                   rdisp.data(), MPI_DOUBLE, comm_.raw());
     std::vector<std::uint64_t> keys;
-    for (std::size_t i = 0; i < n; ++i)
-      if (keep[i]) keys.push_back(sortKey_[i]);
-    p_.compact(keep);
+    for (std::size_t i = 0; i < nk; ++i)
+      if (keepHere[i]) keys.push_back(sortKey_[i]);
+    p_.compact(keepHere);
     for (std::size_t k = 0; k + ps <= rbuf.size(); k += ps) {
       const std::size_t i = p_.size();
       p_.unpack(rbuf.data() + k);
@@ -709,8 +768,10 @@ Energies MpmSolver::energies() const {
     const auto [b, en] = p_.materialRange(static_cast<int>(m));
     for (std::size_t i = b; i < en; ++i) e.heat += p_.mass[i] * cv * p_.temperature[i];
   }
-  std::vector<double> s{e.kinetic, e.strain, e.heat, ledger_.transfer, ledger_.integration, ledger_.damping};
+  std::vector<double> s{e.kinetic, e.strain, e.heat, ledger_.transfer, ledger_.integration, ledger_.damping,
+                        ledger_.outflow.energy()};
   comm_.sumInPlace(s);
+  e.outflow = s[6];
   e.kinetic = s[0];
   e.strain = s[1];
   e.heat = s[2];
@@ -718,6 +779,22 @@ Energies MpmSolver::energies() const {
   e.integration = s[4];
   e.damping = s[5];
   return e;
+}
+
+std::string outflowSummary(const ParticleOutflow& o) {
+  if (!(o.count > 0)) return "";
+  std::ostringstream os;
+  os << "  outflow: " << static_cast<long long>(o.count) << " particles left through outflow faces and were removed "
+     << "(mpm.outflow_particles: remove): mass " << o.mass << " kg, momentum (" << o.momentum[0] << ", "
+     << o.momentum[1] << ", " << o.momentum[2] << ") kg m/s, energy " << o.energy() << " J (kinetic " << o.kinetic
+     << ", stress work " << o.strain << ", heat " << o.heat << ")\n";
+  return os.str();
+}
+
+ParticleOutflow MpmSolver::outflow() const {
+  std::vector<double> v = ledger_.outflow.pack();
+  comm_.sumInPlace(v);
+  return ParticleOutflow::unpack(v);
 }
 
 core::RealVect MpmSolver::centerOfMassVelocity() const {

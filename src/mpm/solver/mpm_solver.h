@@ -13,6 +13,7 @@
 ///   endStep()                      migration between ranks, sorting, time advance
 /// An uncoupled step (advance()) is these phases in order with no external contributions.
 /// Collective calls (all ranks): constructor, stableTimeStep, every phase, energies.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,10 +43,40 @@ struct Energies {
   // nodes plus the stress work of the particles: zero for an exact time integration; wall
   // constraints included) and mpm.damping's work.
   double transfer = 0, integration = 0, damping = 0;
+  // The energy (kinetic + strain + heat) the particles removed through outflow faces carried out
+  // of the mesh (mpm.outflow_particles: remove), summed over the steps so far [J].
+  double outflow = 0;
   double total() const { return kinetic + strain; }
-  /// kinetic + strain + heat less what the method created: constant in a closed system.
-  double balance() const { return kinetic + strain + heat - transfer - integration - damping; }
+  /// kinetic + strain + heat, plus what left through outflow faces, less what the method created:
+  /// constant in a closed system.
+  double balance() const { return kinetic + strain + heat + outflow - transfer - integration - damping; }
 };
+
+/// What the particles removed through outflow faces (mpm.outflow_particles: remove) carried out of
+/// the mesh: count, mass, momentum and energy (kinetic, stress work, heat m cv T), summed over the
+/// steps so far.
+struct ParticleOutflow {
+  double count = 0, mass = 0;
+  std::array<double, 3> momentum{0, 0, 0};
+  double kinetic = 0, strain = 0, heat = 0;
+  [[nodiscard]] double energy() const { return kinetic + strain + heat; }
+  [[nodiscard]] std::vector<double> pack() const {
+    return {count, mass, momentum[0], momentum[1], momentum[2], kinetic, strain, heat};
+  }
+  static ParticleOutflow unpack(const std::vector<double>& v) {
+    ParticleOutflow o;
+    if (v.size() != 8) return o;
+    o.count = v[0];
+    o.mass = v[1];
+    o.momentum = {v[2], v[3], v[4]};
+    o.kinetic = v[5];
+    o.strain = v[6];
+    o.heat = v[7];
+    return o;
+  }
+};
+/// The closing line of a run whose particles left through outflow faces ("" when none did).
+std::string outflowSummary(const ParticleOutflow& o);
 
 class MpmSolver {
  public:
@@ -133,6 +164,7 @@ class MpmSolver {
   struct Ledger {
     double transfer = 0, integration = 0, damping = 0;
     double keParticles = 0, work = 0, keNodes = 0;  // at the start of the step, after P2G
+    ParticleOutflow outflow;                        // this rank's removed particles (migrateAndSort)
   };
   struct Checkpoint {
     ParticleSet particles;
@@ -160,6 +192,12 @@ class MpmSolver {
 
   // ---- diagnostics ---------------------------------------------------------------------------
   [[nodiscard]] Energies energies() const;
+  /// What the particles removed through outflow faces carried out, summed over ranks (collective).
+  [[nodiscard]] ParticleOutflow outflow() const;
+  /// Particles removed through outflow faces at the end of the last step (global, every rank),
+  /// and, on rank 0, a line saying which (face, material, count, mass, time); empty otherwise.
+  [[nodiscard]] long long removedLastStep() const { return removedLastStep_; }
+  [[nodiscard]] const std::string& removalReport() const { return removalReport_; }
   /// Centre-of-mass velocity (global).
   [[nodiscard]] core::RealVect centerOfMassVelocity() const;
 
@@ -228,6 +266,8 @@ class MpmSolver {
   double signalSpeed_ = 0;
   bool signalSpeedValid_ = false;
   Ledger ledger_;
+  long long removedLastStep_ = 0;
+  std::string removalReport_;
   bool gridStressWork_ = false;     // mpm.stress_work: grid (addStressWork) or material (the models)
   std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
   std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)

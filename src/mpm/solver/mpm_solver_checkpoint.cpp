@@ -16,6 +16,7 @@ void MpmSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   data.put(prefix + ".clock", std::vector<double>{time_, static_cast<double>(step_), dt_, collapse_.first()});
   data.put(prefix + ".energy_ledger", std::vector<double>{ledger_.transfer, ledger_.integration, ledger_.damping,
                                                           ledger_.keParticles, ledger_.work, ledger_.keNodes});
+  data.put(prefix + ".outflow", ledger_.outflow.pack());
 }
 
 void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
@@ -45,7 +46,16 @@ void MpmSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
   if (ledger.size() != 6)
     throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".energy_ledger' has " +
                                 std::to_string(ledger.size()) + " values, expected 6");
-  ledger_ = {ledger[0], ledger[1], ledger[2], ledger[3], ledger[4], ledger[5]};
+  ledger_ = {ledger[0], ledger[1], ledger[2], ledger[3], ledger[4], ledger[5], {}};
+  // The particles removed through outflow faces so far (absent in checkpoints written before it).
+  if (data.has(prefix + ".outflow")) {
+    const auto& out = data.get(prefix + ".outflow");
+    if (out.size() != ParticleOutflow{}.pack().size())
+      throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".outflow' has " +
+                                  std::to_string(out.size()) + " values, expected " +
+                                  std::to_string(ParticleOutflow{}.pack().size()));
+    ledger_.outflow = ParticleOutflow::unpack(out);
+  }
 }
 
 }  // namespace mpmice::mpm

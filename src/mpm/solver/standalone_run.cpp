@@ -75,6 +75,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   while (core::goesOn(solver.time(), solver.stepCount(), scene.time.end, scene.time.max_steps)) {
     const double dt = solver.advance(outputs.landingTarget(solver.time(), solver.stableTimeStep()));
     checkHealth(solver);  // collective: every rank stops on a non-physical state
+    if (solver.removedLastStep() > 0 && comm.root()) log << solver.removalReport() << "\n" << std::flush;
     if (probes) probes->record(solver);
     if (outputs.due(solver.time())) write();
     progress.step(static_cast<int>(solver.stepCount()), solver.time(), dt, {},
@@ -86,9 +87,11 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) write();  // no step taken
   record.completed();
   const auto e = solver.energies();
+  const ParticleOutflow out = solver.outflow();  // collective
   progress.finish(static_cast<int>(solver.stepCount()), solver.time(), static_cast<double>(np), "particle-steps");
   if (comm.root())
     log << "  energy: kinetic " << e.kinetic << ", strain " << e.strain << ", total " << e.total() << "\n" << std::flush;
+  if (comm.root() && out.count > 0) log << outflowSummary(out) << std::flush;
   return 0;
 }
 

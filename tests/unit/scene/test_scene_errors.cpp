@@ -200,6 +200,8 @@ std::vector<BadScene> badScenes() {
        {"materials[0].model.hardening.plastic_strain: must start at 0"}},
       {"unknown mpm shape function", kBase + "mpm: {shape_function: bspline}\n",
        {"mpm.shape_function: unknown shape function 'bspline'; valid: bspline2, bspline3, gimp, linear"}},
+      {"unknown mpm outflow_particles", kBase + "mpm: {outflow_particles: keep}\n",
+       {"mpm.outflow_particles: unknown particles leaving through an outflow face 'keep'; valid: error, remove"}},
       {"max_iterations below min", kBase + "coupling: {min_iterations: 5, max_iterations: 2}\n",
        {"coupling.max_iterations: 2 is out of range; expected an integer >= 5"}},
       {"openfoam without an interface", kBase2 + "coupling: {schedule: explicit_serial, fluid: openfoam}\n",

@@ -4,7 +4,7 @@ namespace mpmice::coupler {
 
 SideTotals SideTotals::unpack(const std::vector<double>& v) {
   SideTotals t;
-  if (v.size() != 10) return t;
+  if (v.size() != 12) return t;
   t.mass = v[0];
   t.momentum = {v[1], v[2], v[3]};
   t.kinetic = v[4];
@@ -13,6 +13,8 @@ SideTotals SideTotals::unpack(const std::vector<double>& v) {
   t.transfer = v[7];
   t.integration = v[8];
   t.damping = v[9];
+  t.massOut = v[10];
+  t.energyOut = v[11];
   return t;
 }
 
@@ -31,7 +33,8 @@ RunOutput::RunOutput(const core::Scene& scene, const core::Comm& comm, const cor
         std::vector<std::string>{"step", "time", "solid_mass", "fluid_mass", "momentum_x", "momentum_y",
                                  "momentum_z", "solid_energy", "fluid_energy", "total_energy", "solid_kinetic",
                                  "solid_elastic", "solid_heat", "fluid_kinetic", "fluid_internal", "mpm_transfer",
-                                 "mpm_stress_integration", "mpm_damping", "balance"},
+                                 "mpm_stress_integration", "mpm_damping", "balance", "solid_mass_outflow",
+                                 "solid_energy_outflow"},
         0, resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
   }
 }
@@ -52,7 +55,8 @@ void RunOutput::writeTotals(long step, double time, const SideTotals& s, const S
   const double total = s.energy() + f.energy(), created = s.created() + f.created();
   csv_->row({double(step), time, s.mass, f.mass, s.momentum[0] + f.momentum[0], s.momentum[1] + f.momentum[1],
              s.momentum[2] + f.momentum[2], s.kinetic + s.internal, f.energy(), total, s.kinetic, s.internal, s.heat,
-             f.kinetic, f.internal, s.transfer, s.integration, s.damping, total - created});
+             f.kinetic, f.internal, s.transfer, s.integration, s.damping, total - created, s.massOut,
+             s.energyOut});
 }
 
 }  // namespace mpmice::coupler

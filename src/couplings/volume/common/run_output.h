@@ -18,16 +18,20 @@ namespace mpmice::coupler {
 /// Totals of one side: mass, momentum (3) and the energy by kind (docs/coupling.md "Energy
 /// budget"): kinetic; internal (fluid: internal energy; solid: stress work, elastic + plastic);
 /// heat (solid: sum m cv T of the particles); and what the solid's method itself created (> 0) or
-/// removed (MpmSolver Energies: particle-grid transfer, stress integration, damping).
+/// removed (MpmSolver Energies: particle-grid transfer, stress integration, damping); the mass and
+/// energy the particles removed through outflow faces carried out (mpm.outflow_particles), which
+/// count as removed.
 struct SideTotals {
   double mass = 0;
   std::array<double, 3> momentum{0, 0, 0};
   double kinetic = 0, internal = 0, heat = 0;
   double transfer = 0, integration = 0, damping = 0;
+  double massOut = 0, energyOut = 0;
   [[nodiscard]] double energy() const { return kinetic + internal + heat; }
-  [[nodiscard]] double created() const { return transfer + integration + damping; }
+  [[nodiscard]] double created() const { return transfer + integration + damping - energyOut; }
   [[nodiscard]] std::vector<double> pack() const {
-    return {mass, momentum[0], momentum[1], momentum[2], kinetic, internal, heat, transfer, integration, damping};
+    return {mass,     momentum[0], momentum[1], momentum[2], kinetic, internal,
+            heat,     transfer,    integration, damping,     massOut, energyOut};
   }
   static SideTotals unpack(const std::vector<double>& v);
 };

@@ -187,6 +187,8 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     ++n;
     LaunchWatchdog::step(n);
     if (afterStep) afterStep(n);
+    if (sides.solid && comm.root() && sides.solid->solver().removedLastStep() > 0)
+      log << sides.solid->solver().removalReport() << "\n" << std::flush;
     const double exchangeStep = transport.seconds() - exchange0;
     const auto peerSplit =
         checkHealth(sides, transport, comm, label, !both, {now() - wall0 - exchangeStep, exchangeStep});
@@ -223,6 +225,10 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
 
   record.completed();
   // 4. Closing lines.
+  if (sides.solid) {
+    const mpm::ParticleOutflow gone = sides.solid->solver().outflow();  // collective
+    if (comm.root() && gone.count > 0) log << mpm::outflowSummary(gone) << std::flush;
+  }
   if (comm.root() && sides.solid) {
     log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n
         << " steps (" << double(iterations) / double(std::max(1L, n)) << " per step), " << unconverged

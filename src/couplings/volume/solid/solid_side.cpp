@@ -70,6 +70,8 @@ SideTotals SolidSide::totals() const {
   t.transfer = e.transfer;
   t.integration = e.integration;
   t.damping = e.damping;
+  t.massOut = mpm_.outflow().mass;  // collective
+  t.energyOut = e.outflow;
   return t;
 }
 
