@@ -1,0 +1,154 @@
+// The perpendicular flap with MPM-ICE (configs/flap_mpmice.yaml, docs/flap.md "Mixed cells"), a
+// small, fast variant: the scene at dx = 0.1 (60 x 40 cells, the flap one cell wide: 2 x 20
+// particles), run in-process (the monolithic schedule of mpmice) to t = 0.3 s, on the rise to the
+// first peak, once with the gas at 1 atm and once at 10 atm (cv, the initial, inflow and outflow
+// pressures and the flap's EOS reference pressure raised alike, so rho = 1 at 300 K and the flap is
+// stress-free at the ambient pressure, as in docs/flap.md). Issue 14:
+//  - the gas's ambient pressure must not move the flap: a uniform pressure level is no load, and
+//    at Mach 0.027 / 0.0085 the flow's pressures are the incompressible ones to ~1e-3; the tip
+//    displacement at t = 0.3 s at 10 atm within 3 % of the one at 1 atm;
+//  - the heat the mixed cells create at the flap's surface (the flap takes it: heat exchange
+//    1e15) stays below what the flow dissipates: (p_in - p_out) Q t, the mechanical energy the
+//    channel's fixed inflow and outflow pressures take from the flow (130 Pa x 40 m^2/s x t).
+// Measured on main (4c8cc7e), dx = 0.1, t = 0.3 s (this test): tip ux 0.1262 m at 1 atm, 0.0984 m
+// at 10 atm (22 % lower); flap heat +570 J and +1463 J against the flow's 1560 J (docs/flap.md).
+// The ambient-pressure test is DISABLED_ (it fails on main and on this branch: the defect is
+// found, not fixed); the heat test passes on main and guards the bound.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "coupler/transport/in_memory_transport.h"
+#include "core/scene/scene.h"
+#include "couplings/volume/schedule/coupling_schedule.h"
+#include "serial_mpi.h"
+
+using namespace mpmice;
+using namespace mpmice::coupler;
+
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Replaces the occurrence of `from` in `text`; throws, naming it, when the scene no longer has it.
+void replaceOnce(std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at == std::string::npos)
+    throw std::runtime_error(std::string("the flap scene ") + FLAP_SCENE + " no longer holds '" + from + "'");
+  text.replace(at, from.size(), to);
+}
+
+struct FlapRun {
+  double tipUx = std::numeric_limits<double>::quiet_NaN();  // tip x-displacement at the end [m]
+  double flapHeat = 0;                                      // change of the flap's m cv T [J]
+  double time = 0;
+  int steps = 0;
+};
+
+/// The flap scene at dx = 0.1 to `end` with the gas at `atm` atmospheres.
+FlapRun runFlap(double atm, double end) {
+  std::string y = readFile(FLAP_SCENE);
+  char buf[256];
+  replaceOnce(y, "spacing: 0.025", "spacing: 0.1");
+  std::snprintf(buf, sizeof buf, "end: %.17g", end);
+  replaceOnce(y, "end: 5.0", buf);
+  const double p = 101325.0 * atm;
+  std::snprintf(buf, sizeof buf, "specific_heat: %.17g", p / (0.4 * 300.0));
+  replaceOnce(y, "specific_heat: 844.375", buf);
+  std::snprintf(buf, sizeof buf, "pressure: %.17g\n", p);
+  replaceOnce(y, "pressure: 101325\n", buf);
+  std::snprintf(buf, sizeof buf, "pressure: %.17g,", p + 130.0);
+  replaceOnce(y, "pressure: 101455,", buf);
+  std::snprintf(buf, sizeof buf, "{type: outflow, pressure: %.17g}", p);
+  replaceOnce(y, "{type: outflow, pressure: 101325}", buf);
+  std::snprintf(buf, sizeof buf, "poissons_ratio: 0.3}\n    eos: {type: solid_bulk, threshold_pressure: %.17g}", p);
+  replaceOnce(y, "poissons_ratio: 0.3}", buf);
+  core::Scene scene = core::parseScene(y, FLAP_SCENE);
+  scene.output.enabled = false;
+  core::Comm comm{MPI_COMM_SELF};
+  mpm::MpmSolver mpm(scene, comm);
+  ice::IceSolver ice(scene, comm);
+  SolidSide solid(mpm);
+  FluidSide fluid(ice, scene);
+  const Sides sides{&solid, &fluid};
+  InMemoryTransport tr;
+  startCoupling(sides, tr);
+  const auto schedule = makeSchedule(scene, comm);
+  // The tip: the particle nearest to (0, 1), followed by its id.
+  const auto& pa = mpm.particles();
+  std::size_t tip = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    const double d = std::hypot(pa.x[0][i], pa.x[1][i] - 1.0);
+    if (d < best) best = d, tip = i;
+  }
+  const std::int64_t tipId = pa.id[tip];
+  const double x0 = pa.x[0][tip];
+  FlapRun r;
+  const double heat0 = solid.totals().heat;
+  double t = 0;
+  while (t < end * (1 - 1e-12)) {
+    double dt = std::min({solid.stableTimeStep(), fluid.stableTimeStep(), scene.time.dt_max});
+    dt = std::min(dt, end - t);
+    schedule->step(sides, tr, dt);
+    t += dt;
+    ++r.steps;
+  }
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    if (pa.id[i] == tipId) r.tipUx = pa.x[0][i] - x0;
+  r.flapHeat = solid.totals().heat - heat0;
+  r.time = t;
+  return r;
+}
+
+constexpr double kEnd = 0.3;  // [s]: on the rise to the first peak (0.79 s at this dx)
+
+/// The two runs, made once for both tests.
+const std::pair<FlapRun, FlapRun>& runs() {
+  static const std::pair<FlapRun, FlapRun> r = [] {
+    const FlapRun one = runFlap(1.0, kEnd), ten = runFlap(10.0, kEnd);
+    std::printf("flap dx 0.1, t = %.3f s: tip ux 1 atm %.5f m (%d steps), 10 atm %.5f m (%d steps), "
+                "difference %.2f %%; flap heat 1 atm %.1f J, 10 atm %.1f J; flow dissipation %.0f J\n",
+                one.time, one.tipUx, one.steps, ten.tipUx, ten.steps, 100 * (ten.tipUx - one.tipUx) / one.tipUx,
+                one.flapHeat, ten.flapHeat, 130.0 * 40.0 * kEnd);
+    return std::make_pair(one, ten);
+  }();
+  return r;
+}
+
+// The flow's dissipation over the run: the fixed inflow - outflow pressure difference (130 Pa)
+// times the volume flux (10 m/s x 4 m) times the time. Passes on main (4c8cc7e): 570 J and
+// 1463 J against 1560 J (the energy closure of the coupled step holds the surface heat down; the
+// 5.5 MJ of docs/flap.md's older figures are gone).
+TEST(FlapMixedCells, SurfaceMakesLessHeatThanTheFlowDissipates) {
+  const auto& [one, ten] = runs();
+  const double dissipation = 130.0 * 40.0 * kEnd;
+  EXPECT_LT(std::abs(one.flapHeat), dissipation) << "1 atm: heat created at the surface";
+  EXPECT_LT(std::abs(ten.flapHeat), dissipation) << "10 atm: heat created at the surface";
+}
+
+// Fails on main (4c8cc7e): 0.1262 m at 1 atm, 0.0984 m at 10 atm (-22 %): the gas trapped in the
+// mixed cells is compressed as the node-to-cell average moves the flap's mass into them, with a
+// stiffness gamma p (docs/flap.md "Mixed cells"). DISABLED_ until the coupling is fixed; run it
+// with --gtest_also_run_disabled_tests.
+TEST(FlapMixedCells, DISABLED_AmbientPressureDoesNotMoveTheFlap) {
+  const auto& [one, ten] = runs();
+  ASSERT_TRUE(std::isfinite(one.tipUx) && std::isfinite(ten.tipUx));
+  EXPECT_GT(one.tipUx, 0.05) << "the flap must bend downstream";
+  EXPECT_NEAR(ten.tipUx, one.tipUx, 0.03 * one.tipUx) << "the gas's ambient pressure moves the flap";
+}
+
+}  // namespace
