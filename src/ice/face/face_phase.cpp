@@ -1,5 +1,6 @@
-// IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces, and the
-// face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
+// IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces (with the
+// Riemann face pressure, at faces in compression the response to the pressure jump is at least the
+// two-shock solution's 1 / (W_L + W_R)), and the face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
 // minus the two-shock Riemann dissipation W_L W_R / (W_L + W_R) (u_R - u_L) at faces in compression
 // (ice.face_pressure: riemann, the default for fluids alone),
 // plus the shock viscosity q = rho (q1 c |du| + q2 du^2) at faces in compression when asked
