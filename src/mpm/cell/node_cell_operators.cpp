@@ -73,15 +73,23 @@ const SolidCellState& NodeCellOperators::cellState(int material) {
   vt.fill(0.0);
   double* mp[3] = {mom.data(0), mom.data(1), mom.data(2)};
   const GridGeom geom = g.geom();
+  // One stencil evaluation per particle for mass, momentum, volume and m T (the operations of
+  // kernels::particlesToGrid and of the volume pass, in the same particle order: every node sum
+  // gets the same terms in the same order as with two passes).
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
-    kernels::particlesToGrid<S, D>(p_, b, e, geom, nm.data(), mp);
     kernels::Stencil<S, D> st;
+    double* mass = nm.data();
     double* vol = vt.data(0);
     double* mt = vt.data(1);
     for (std::size_t i = b; i < e; ++i) {
       st.compute(p_, i, geom);
+      const double m = p_.mass[i];
+      double mv[3] = {0, 0, 0};
+      for (int d = 0; d < D; ++d) mv[d] = m * p_.v[d][i];
       const double V = p_.vol[i], MT = p_.mass[i] * p_.temperature[i];
       st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
+        mass[k] += m * w;
+        for (int d = 0; d < D; ++d) mp[d][k] += mv[d] * w;
         vol[k] += V * w;
         mt[k] += MT * w;
       });
@@ -267,20 +275,7 @@ void NodeCellOperators::addCellForce(int material, const Field& force) {
 
 void NodeCellOperators::cellToParticles(const Field& cellValue, double offset, std::vector<double>& out) {
   Grid& g = grid_;
-  if (nodeValue_.npts() == 0) nodeValue_ = Field("cell_to_node", Centering::Node, g.box(), 2, Grid::kGhost);
-  // Cell -> node: each node the average of the mesh cells around it (its shares sum to 1 on every
-  // mesh node; component 1 keeps that sum, so nodes outside the mesh, which no cell reaches,
-  // carry weight 0 and drop out of the particle interpolation below).
-  nodeValue_.fill(0.0);
-  core::forEach(cells_, [&](int i, int j, int k) {
-    const double v = cellValue(i, j, k) - offset;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      nodeValue_(ni, nj, nk, 0) += share * v;
-      nodeValue_(ni, nj, nk, 1) += share;
-    });
-  });
-  g.sumAndFill({&nodeValue_});
-  bcs_.mirror(nodeValue_, Parity::Scalar);
+  cellToNodes(cellValue, offset);
   // Node -> particle with the particle's own shape function, normalised by the weight of the
   // nodes that hold a value.
   const double* nv = nodeValue_.data(0);
@@ -301,8 +296,26 @@ void NodeCellOperators::cellToParticles(const Field& cellValue, double offset, s
   });
 }
 
+void NodeCellOperators::cellToNodes(const Field& cellValue, double offset) {
+  Grid& g = grid_;
+  if (nodeValue_.npts() == 0) nodeValue_ = Field("cell_to_node", Centering::Node, g.box(), 2, Grid::kGhost);
+  // Cell -> node: each node the average of the mesh cells around it (its shares sum to 1 on every
+  // mesh node; component 1 keeps that sum, so nodes outside the mesh, which no cell reaches,
+  // carry weight 0 and drop out of the particle interpolation).
+  nodeValue_.fill(0.0);
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const double v = cellValue(i, j, k) - offset;
+    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
+      nodeValue_(ni, nj, nk, 0) += share * v;
+      nodeValue_(ni, nj, nk, 1) += share;
+    });
+  });
+  g.sumAndFill({&nodeValue_});
+  bcs_.mirror(nodeValue_, Parity::Scalar);
+}
+
 void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
-  cellToParticles(pcell, pRef, particlePressure_);  // p_p - pRef; nodeValue_ holds the node values
+  cellToNodes(pcell, pRef);  // p - pRef at the nodes; the particle values are formed below
   Grid& g = grid_;
   g.remap.fill(0.0);
   double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
@@ -315,8 +328,14 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const double q = particlePressure_[i];
+      // p_p - pRef as cellToParticles gives it, from the same stencil evaluation as the force.
       st.compute(p_, i, geom);
+      double qv = 0, qw = 0;
+      st.forNodes(geom, [&](std::int64_t k, double wi, double, double, double) {
+        qv += wi * nv[k];
+        qw += wi * nw[k];
+      });
+      const double q = qw > 0 ? qv / qw : 0.0;
       // The solid's side: the node pressure at the heaviest node of the stencil; the node mass
       // and its gradient at the particle give the surface normal and how much of a surface it is.
       double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = q;

@@ -154,6 +154,9 @@ class NodeCellOperators {
  private:
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
   const SolidCellState& current(int material, const char* op) const;
+  /// nodeValue_ = (the average of the cells around each node of cellValue - offset, the sum of
+  /// their shares): the first half of cellToParticles.
+  void cellToNodes(const core::Field& cellValue, double offset);
   /// cellMass_ = the mass of particles [b, e) in each owned cell.
   void sumParticleMassPerCell(std::size_t b, std::size_t e);
   /// Spreads per-cell vectors cellVector(i, j, k, d) of material m into the grid's remap field
@@ -178,7 +181,6 @@ class NodeCellOperators {
   core::Field momentum_, volumeTemperature_;  // cellState() scratch (node momentum; V, m T)
   core::Field dv_;                             // applyCellMomentumIncrement() scratch
   core::Field nodeValue_;                      // cellToParticles() node value and weight
-  std::vector<double> particlePressure_;       // addCellPressureStress() scratch
   core::Field nodeScratch_, nodeEnergy_;       // applyCellMomentumIncrement(), addCellEnergy() scratch
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
   std::vector<double> cellMass_;               // spreadCellVectors() scratch

@@ -27,6 +27,8 @@ class ConstitutiveModel {
  public:
   virtual ~ConstitutiveModel() = default;
   [[nodiscard]] virtual const char* name() const = 0;
+  /// Whether the model keeps a plastic history (the particle columns eqps and failed).
+  [[nodiscard]] virtual bool plasticHistory() const { return false; }
   /// Stress update of particles [begin, end) over dt.
   virtual void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const = 0;
   /// Dilatational (P-) wave speed at density rho, for the time step.

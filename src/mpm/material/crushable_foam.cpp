@@ -29,7 +29,7 @@ void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
   const double K = c_.K, G = c_.G, a2 = alpha_ * alpha_;
   for (std::size_t i = begin; i < end; ++i) {
     const Sym3 s = loadStress(p, i);
-    ElasticTrial t = elasticTrial(loadMat(p.L, i), s, K, G, dt);
+    ElasticTrial t = elasticTrial(loadL(p, i), s, K, G, dt);
     const double q = std::sqrt(1.5 * ddot(t.dev, t.dev));
     const double e0 = p.eqps[i];
     const double Y0 = flowStress(e0);

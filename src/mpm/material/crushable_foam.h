@@ -33,6 +33,7 @@ class CrushableFoam final : public ElasticWaveModel {
  public:
   CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f);
   [[nodiscard]] const char* name() const override { return "crushable_foam"; }
+  [[nodiscard]] bool plasticHistory() const override { return true; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
   /// Flow stress Y at eps_hat (< eps_D).
   [[nodiscard]] double flowStress(double epsHat) const;

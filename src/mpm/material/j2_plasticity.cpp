@@ -55,7 +55,7 @@ void J2Plasticity::updateStress(ParticleSet& p, std::size_t begin, std::size_t e
   for (std::size_t i = begin; i < end; ++i) {
     const Sym3 s = loadStress(p, i);
     // Elastic trial (Jaumann rate).
-    ElasticTrial trial = elasticTrial(loadMat(p.L, i), s, K, G, dt);
+    ElasticTrial trial = elasticTrial(loadL(p, i), s, K, G, dt);
     const Sym3& D = trial.D;
     double pm = trial.mean;  // mean stress
     Sym3& dev = trial.dev;

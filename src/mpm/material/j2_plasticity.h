@@ -24,6 +24,7 @@ class J2Plasticity final : public ElasticWaveModel {
                double failureStrain, std::vector<double> tableStrain = {},
                std::vector<double> tableStress = {});
   [[nodiscard]] const char* name() const override { return rateC_ > 0 ? "cowper_symonds" : "j2_plasticity"; }
+  [[nodiscard]] bool plasticHistory() const override { return true; }
   /// Cowper-Symonds scaling of the flow stress (C [1/s] > 0, p > 0).
   void setRateDependence(double c, double p);
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;

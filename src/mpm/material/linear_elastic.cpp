@@ -9,8 +9,12 @@ namespace mpmice::mpm {
 void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t end,
                                  double dt) const {
   const double lam = c_.lambda(), twoG = 2.0 * c_.G;
+  if (p.layout().dim < 3) {
+    updatePlanar(p, begin, end, dt);
+    return;
+  }
   for (std::size_t i = begin; i < end; ++i) {
-    const Mat3 L = loadMat(p.L, i);
+    const Mat3 L = loadL(p, i);
     const Sym3 D = symPart(L);
     const Sym3 s = loadStress(p, i);
     const Sym3 spin = jaumannSpin(L, s);
@@ -19,6 +23,41 @@ void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
     for (int k = 0; k < 6; ++k) n[k] = s[k] + dt * (twoG * D[k] + (k < 3 ? lt : 0.0) + spin[k]);
     p.work[i] += stressWork(s, n, D, p.vol[i], dt);
     storeStress(p, i, n);
+  }
+}
+
+// The loop above with the out-of-plane components of L and of the stress at their exact zeros
+// (1D / 2D; ParticleLayout): every operation of it whose operands are not all such zeros, in the
+// same order, so the stored components get the same bits. Where the loop adds a product of exact
+// zeros to a sum started at 0, the sum is its only other term t "canonicalised" (0 + t: -0 -> +0),
+// written t + 0.0 here. With a = w01 s_xy:
+//   spin_xx = (a + 0) - (-a + 0), spin_yy = (-a + 0) - (a + 0), spin_zz = +0,
+//   spin_xy = (w01 s_yy + 0) - (s_xx w01 + 0); D_zz = +0 so 2G D_zz + lt = lt + 0.
+void LinearElastic::updatePlanar(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const {
+  const double lam = c_.lambda(), twoG = 2.0 * c_.G;
+  const double *L0c = p.L[0].data(), *L1c = p.L[1].data(), *L3c = p.L[3].data(), *L4c = p.L[4].data();
+  double *sxx = p.stress[kXX].data(), *syy = p.stress[kYY].data(), *szz = p.stress[kZZ].data(),
+         *sxy = p.stress[kXY].data();
+  const double* vol = p.vol.data();
+  double* work = p.work.data();
+  for (std::size_t i = begin; i < end; ++i) {
+    const double L0 = L0c[i], L1 = L1c[i], L3 = L3c[i], L4 = L4c[i];
+    const Sym3 s = {sxx[i], syy[i], szz[i], sxy[i], 0.0, 0.0};
+    const Sym3 D = {L0, L4, 0.0, 0.5 * (L1 + L3), 0.0, 0.0};
+    const double w01 = 0.5 * (L1 - L3);
+    const double a = w01 * s[3], pa = a + 0.0, ma = -a + 0.0;
+    const double lt = lam * ((L0 + L4) + 0.0);
+    const Sym3 n = {s[0] + dt * (twoG * L0 + lt + (pa - ma)),
+                    s[1] + dt * (twoG * L4 + lt + (ma - pa)),
+                    s[2] + dt * (lt + 0.0),
+                    s[3] + dt * (twoG * D[3] + 0.0 + ((w01 * s[1] + 0.0) - (s[0] * w01 + 0.0))),
+                    0.0,
+                    0.0};
+    work[i] += stressWork(s, n, D, vol[i], dt);
+    sxx[i] = n[0];
+    syy[i] = n[1];
+    szz[i] = n[2];
+    sxy[i] = n[3];
   }
 }
 

@@ -14,6 +14,10 @@ class LinearElastic final : public ElasticWaveModel {
   explicit LinearElastic(const ElasticConstants& c) : ElasticWaveModel(c) {}
   [[nodiscard]] const char* name() const override { return "linear_elastic"; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
+
+ private:
+  /// updateStress in 1D / 2D (out-of-plane components not stored): the same bits, fewer operations.
+  void updatePlanar(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const;
 };
 
 }  // namespace mpmice::mpm

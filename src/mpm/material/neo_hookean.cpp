@@ -10,7 +10,7 @@ void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end
                               double dt) const {
   const double lam = c_.lambda(), G = c_.G;
   for (std::size_t i = begin; i < end; ++i) {
-    const Mat3 F = loadMat(p.F, i);
+    const Mat3 F = loadF(p, i);
     const double J = det(F);
     const double invJ = 1.0 / J;
     // b = F F^T (symmetric).
@@ -22,7 +22,7 @@ void NeoHookean::updateStress(ParticleSet& p, std::size_t begin, std::size_t end
                     G * invJ * (bij(2, 2) - 1.0) + pr, G * invJ * bij(0, 1),
                     G * invJ * bij(1, 2), G * invJ * bij(0, 2)};
     const Sym3 s = loadStress(p, i);
-    p.work[i] += stressWork(s, n, symPart(loadMat(p.L, i)), p.vol[i], dt);
+    p.work[i] += stressWork(s, n, symPart(loadL(p, i)), p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

@@ -3,7 +3,9 @@
 ///
 /// Particles store the velocity gradient L and deformation gradient F as nine columns and the
 /// symmetric Cauchy stress as six (xx, yy, zz, xy, yz, xz); these helpers gather one particle's
-/// values into registers and scatter them back.
+/// values into registers and scatter them back. In 1D / 2D the out-of-plane components are not
+/// stored (ParticleSet, ParticleLayout): loadF / loadL / loadStress give their exact values (0;
+/// F_zz 1) and storeStress leaves them out (a planar model keeps them 0).
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -20,13 +22,22 @@ inline Mat3 loadMat(const std::array<ParticleSet::Col, 9>& c, std::size_t i) {
   for (int k = 0; k < 9; ++k) m[k] = c[k][i];
   return m;
 }
+/// F or L of particle i; `zz` the value of the zz component where it is not stored.
+inline Mat3 loadMat(const ParticleSet& p, const std::array<ParticleSet::Col, 9>& c, std::size_t i, double zz) {
+  if (p.layout().dim < 3) return {c[0][i], c[1][i], 0.0, c[3][i], c[4][i], 0.0, 0.0, 0.0, zz};
+  return loadMat(c, i);
+}
+inline Mat3 loadF(const ParticleSet& p, std::size_t i) { return loadMat(p, p.F, i, 1.0); }
+inline Mat3 loadL(const ParticleSet& p, std::size_t i) { return loadMat(p, p.L, i, 0.0); }
 inline Sym3 loadStress(const ParticleSet& p, std::size_t i) {
+  if (p.layout().dim < 3) return {p.stress[kXX][i], p.stress[kYY][i], p.stress[kZZ][i], p.stress[kXY][i], 0.0, 0.0};
   Sym3 s;
   for (int k = 0; k < 6; ++k) s[k] = p.stress[k][i];
   return s;
 }
 inline void storeStress(ParticleSet& p, std::size_t i, const Sym3& s) {
-  for (int k = 0; k < 6; ++k) p.stress[k][i] = s[k];
+  const int n = p.layout().dim < 3 ? 4 : 6;  // kXX, kYY, kZZ, kXY first
+  for (int k = 0; k < n; ++k) p.stress[k][i] = s[k];
 }
 /// Symmetric part D of a row-major L, as Sym3.
 inline Sym3 symPart(const Mat3& L) {

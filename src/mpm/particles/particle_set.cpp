@@ -5,14 +5,36 @@
 
 namespace mpmice::mpm {
 
+std::vector<ParticleSet::ColumnInfo> ParticleSet::allColumns() {
+  const ParticleLayout& lay = layout_;
+  const bool planar = lay.dim < 3;
+  std::vector<ColumnInfo> c;
+  c.reserve(51);
+  for (auto* a : {&x, &v, &halfSize})
+    for (auto& col : *a) c.push_back({&col, 0.0, true});
+  for (auto& col : fext) c.push_back({&col, 0.0, lay.loads});
+  for (auto& col : x0) c.push_back({&col, 0.0, true});
+  for (auto& col : fsurf) c.push_back({&col, 0.0, lay.surface});
+  for (auto* s : {&mass, &vol0, &vol, &temperature}) c.push_back({s, 0.0, true});
+  c.push_back({&eqps, 0.0, lay.plastic});
+  c.push_back({&failed, 0.0, lay.plastic});
+  c.push_back({&work, 0.0, true});
+  c.push_back({&loadArea, 0.0, lay.loads});
+  c.push_back({&surface, 0.0, lay.surface});
+  // In 1D / 2D the components with a z index are exact zeros (F_zz the exact 1) and not stored.
+  for (int k = 0; k < 9; ++k) {
+    const bool outOfPlane = k == 2 || k >= 5;
+    c.push_back({&F[k], k == 8 ? 1.0 : 0.0, !(planar && outOfPlane)});
+  }
+  for (int k = 0; k < 9; ++k) c.push_back({&L[k], 0.0, !(planar && (k == 2 || k >= 5))});
+  for (int k = 0; k < 6; ++k) c.push_back({&stress[k], 0.0, !(planar && (k == kYZ || k == kXZ))});
+  return c;
+}
+
 std::vector<ParticleSet::Col*> ParticleSet::columns() {
   std::vector<Col*> c;
-  for (auto* a : {&x, &v, &halfSize, &fext, &x0, &fsurf})
-    for (auto& col : *a) c.push_back(&col);
-  for (auto* s : {&mass, &vol0, &vol, &temperature, &eqps, &failed, &work, &loadArea, &surface}) c.push_back(s);
-  for (auto& col : F) c.push_back(&col);
-  for (auto& col : L) c.push_back(&col);
-  for (auto& col : stress) c.push_back(&col);
+  for (const ColumnInfo& k : allColumns())
+    if (k.stored) c.push_back(k.col);
   return c;
 }
 
@@ -21,17 +43,39 @@ std::vector<const ParticleSet::Col*> ParticleSet::columns() const {
   return {c.begin(), c.end()};
 }
 
+void ParticleSet::setLayout(const ParticleLayout& layout) {
+  const std::size_t n = size();
+  layout_ = layout;
+  for (const ColumnInfo& k : allColumns())
+    if (k.stored)
+      k.col->resize(n, k.value);  // a column stored from now on holds its constant
+    else
+      Col().swap(*k.col);
+  if (layout_.loads)
+    load.resize(n, -1);
+  else
+    std::vector<std::int32_t>().swap(load);
+}
+
+const ParticleSet::Col& ParticleSet::column(const Col& c) const {
+  if (stored(c)) return c;
+  const bool one = &c == &F[8];
+  Col& k = one ? ones_ : zeros_;
+  k.assign(size(), one ? 1.0 : 0.0);
+  return k;
+}
+
 void ParticleSet::resize(std::size_t n) {
   for (Col* c : columns()) c->resize(n, 0.0);
   material.resize(n, 0);
-  load.resize(n, -1);
+  if (layout_.loads) load.resize(n, -1);
   id.resize(n, 0);
 }
 
 void ParticleSet::reserve(std::size_t n) {
   for (Col* c : columns()) c->reserve(n);
   material.reserve(n);
-  load.reserve(n);
+  if (layout_.loads) load.reserve(n);
   id.reserve(n);
 }
 
@@ -51,7 +95,8 @@ std::size_t ParticleSet::addParticle(const std::array<double, 3>& pos,
   vol0[i] = volume;
   vol[i] = volume;
   temperature[i] = temp;
-  F[0][i] = F[4][i] = F[8][i] = 1.0;
+  F[0][i] = F[4][i] = 1.0;
+  if (stored(F[8])) F[8][i] = 1.0;
   material[i] = mat;
   id[i] = gid;
   return i;
@@ -69,7 +114,7 @@ void ParticleSet::permute(const std::vector<std::uint32_t>& perm, std::vector<do
     for (std::size_t i = 0; i < n; ++i) col[i] = tmp[perm[i]];
   };
   permInt(material);
-  permInt(load);
+  if (layout_.loads) permInt(load);
   permInt(id);
 }
 
@@ -81,7 +126,7 @@ void ParticleSet::compact(const std::vector<char>& keep) {
     if (i != j) {
       for (Col* c : columns()) (*c)[j] = (*c)[i];
       material[j] = material[i];
-      load[j] = load[i];
+      if (layout_.loads) load[j] = load[i];
       id[j] = id[i];
     }
     ++j;
@@ -91,13 +136,13 @@ void ParticleSet::compact(const std::vector<char>& keep) {
 
 std::size_t ParticleSet::packedSize() {
   ParticleSet p;
-  return p.columns().size() + 3;
+  return p.allColumns().size() + 3;
 }
 
 void ParticleSet::pack(std::size_t i, std::vector<double>& buf) const {
-  for (const Col* c : columns()) buf.push_back((*c)[i]);
+  for (const ColumnInfo& k : const_cast<ParticleSet*>(this)->allColumns()) buf.push_back(k.stored ? (*k.col)[i] : k.value);
   buf.push_back(material[i]);
-  buf.push_back(load[i]);
+  buf.push_back(layout_.loads ? load[i] : -1);
   buf.push_back(static_cast<double>(id[i]));  // exact below 2^53
 }
 
@@ -105,9 +150,13 @@ std::size_t ParticleSet::unpack(const double* buf) {
   const std::size_t i = size();
   resize(i + 1);
   std::size_t k = 0;
-  for (Col* c : columns()) (*c)[i] = buf[k++];
+  for (const ColumnInfo& c : allColumns()) {  // the value of a column not stored is its constant
+    if (c.stored) (*c.col)[i] = buf[k];
+    ++k;
+  }
   material[i] = static_cast<std::int32_t>(buf[k++]);
-  load[i] = static_cast<std::int32_t>(buf[k++]);
+  if (layout_.loads) load[i] = static_cast<std::int32_t>(buf[k]);
+  ++k;
   id[i] = static_cast<std::int64_t>(buf[k++]);
   return k;
 }

@@ -7,6 +7,15 @@
 /// see materialRange()) and, within a material, sorted by cell when sortByCell() is called, so
 /// the constitutive update runs over a range and the grid loops touch memory in order.
 /// resize()/permute()/pack() treat all columns alike, so adding a column is one line in columns().
+///
+/// Columns a scene does not use are not stored (ParticleLayout, setLayout(): left empty): in 1D and
+/// 2D the out-of-plane tensor components (F and L: xz, yz, zx, zy, zz; stress yz, xz), which are
+/// exact zeros there (F_zz the exact 1), the load columns (fext, loadArea, load) without loads, the
+/// surface-coupling columns (fsurf, surface) until a surface coupling enables them, the plastic
+/// history (eqps, failed) without a plastic model. stored(c) says whether a column is kept;
+/// column(c) gives a stored column or a column of its constant value (for output). pack() writes
+/// every column (the constant of one not stored), so checkpoints and migration buffers keep one
+/// format whatever the layout. A ParticleSet built directly keeps every column (the default layout).
 #include <array>
 #include <cstdint>
 #include <span>
@@ -16,6 +25,14 @@
 namespace mpmice::mpm {
 
 enum StressComp { kXX = 0, kYY = 1, kZZ = 2, kXY = 3, kYZ = 4, kXZ = 5 };
+
+/// Which column groups a ParticleSet stores (see ParticleSet).
+struct ParticleLayout {
+  int dim = 3;           ///< 1, 2: out-of-plane tensor components not stored
+  bool loads = true;     ///< fext, loadArea, load
+  bool surface = true;   ///< fsurf, surface
+  bool plastic = true;   ///< eqps, failed
+};
 
 class ParticleSet {
  public:
@@ -40,6 +57,14 @@ class ParticleSet {
   std::vector<std::int64_t> id;        // global id (stable across ranks and runs)
 
   [[nodiscard]] std::size_t size() const { return mass.size(); }
+  /// Sets the stored column groups: newly stored columns get their constant value for every
+  /// particle, columns no longer stored are freed.
+  void setLayout(const ParticleLayout& layout);
+  [[nodiscard]] const ParticleLayout& layout() const { return layout_; }
+  /// Whether column c (a member of this set) is stored.
+  [[nodiscard]] bool stored(const Col& c) const { return c.size() == size() || size() == 0; }
+  /// Column c if stored, else a column of size() values of its constant (0; F_zz 1).
+  [[nodiscard]] const Col& column(const Col& c) const;
   void resize(std::size_t n);
   void reserve(std::size_t n);
   /// Appends one particle with identity F and zero stress; returns its index.
@@ -69,9 +94,18 @@ class ParticleSet {
   [[nodiscard]] bool groupedByMaterial() const;
 
  private:
-  std::vector<Col*> columns();
+  struct ColumnInfo {
+    Col* col;
+    double value;  // the constant of a column not stored
+    bool stored;
+  };
+  /// Every double column with its constant and whether the layout stores it (pack order).
+  std::vector<ColumnInfo> allColumns();
+  std::vector<Col*> columns();  // the stored ones
   std::vector<const Col*> columns() const;
   std::vector<std::size_t> ranges_{0, 0};
+  ParticleLayout layout_;
+  mutable Col zeros_, ones_;  // column(): constants of columns not stored
 };
 
 }  // namespace mpmice::mpm

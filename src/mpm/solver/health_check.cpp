@@ -23,7 +23,8 @@ bool particlesOk(const ParticleSet& p, std::size_t b, std::size_t e, int dim, do
     finite(p.x[d]);
     finite(p.v[d]);
   }
-  for (int c = 0; c < 6; ++c) finite(p.stress[c]);
+  for (int c = 0; c < 6; ++c)
+    if (p.stored(p.stress[c])) finite(p.stress[c]);
   const double *m = p.mass.data(), *v = p.vol.data(), *T = p.temperature.data();
   for (std::size_t i = b; i < e; ++i) {
     ok &= (m[i] > 0) & std::isfinite(m[i]) & (v[i] > 0) & std::isfinite(v[i]) & (T[i] > 0) &
@@ -63,7 +64,7 @@ std::string findViolation(const MpmSolver& s) {
         else if (!std::isfinite(p.v[d][i])) q = "velocity [m/s]", v = p.v[d][i];
       }
       for (int c = 0; c < 6 && !q; ++c)
-        if (!std::isfinite(p.stress[c][i])) q = "stress [Pa]", v = p.stress[c][i];
+        if (p.stored(p.stress[c]) && !std::isfinite(p.stress[c][i])) q = "stress [Pa]", v = p.stress[c][i];
       if (!q && !(p.mass[i] > 0 && std::isfinite(p.mass[i]))) q = "mass [kg]", v = p.mass[i], expected = "finite, > 0";
       if (!q && !(p.vol[i] > 0 && std::isfinite(p.vol[i])))
         q = "volume [m^3]", v = p.vol[i], expected = "finite, > 0";

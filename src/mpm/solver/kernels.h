@@ -225,7 +225,14 @@ struct ParticleForce {
   double s[6] = {0, 0, 0, 0, 0, 0};  // V sigma
   ParticleForce(const ParticleSet& p, std::size_t i, const double gravity[3], bool loads) {
     const double V = p.vol[i];
-    for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + (loads ? p.fext[d][i] + p.fsurf[d][i] : 0.0);
+    if (loads) {
+      // A load column not stored (no scene loads, no surface forces) holds zeros.
+      const bool ext = p.stored(p.fext[0]), surf = p.stored(p.fsurf[0]);
+      for (int d = 0; d < Dim; ++d)
+        b[d] = p.mass[i] * gravity[d] + ((ext ? p.fext[d][i] : 0.0) + (surf ? p.fsurf[d][i] : 0.0));
+    } else {
+      for (int d = 0; d < Dim; ++d) b[d] = p.mass[i] * gravity[d] + 0.0;
+    }
     s[kXX] = V * p.stress[kXX][i];
     if constexpr (Dim >= 2) {
       s[kYY] = V * p.stress[kYY][i];

@@ -46,15 +46,15 @@ std::string MpmOutput::write(const MpmSolver& solver) {
   if (wanted("velocity")) out.addVector("velocity", {S(p.v[0]), S(p.v[1]), S(p.v[2])});
   if (wanted("stress")) {
     std::vector<S> c;
-    for (int k = 0; k < 6; ++k) c.emplace_back(p.stress[k]);
+    for (int k = 0; k < 6; ++k) c.emplace_back(p.column(p.stress[k]));
     out.addVector("stress", std::move(c));
   }
   if (wanted("deformation_gradient")) {
     std::vector<S> c;
-    for (int k = 0; k < 9; ++k) c.emplace_back(p.F[k]);
+    for (int k = 0; k < 9; ++k) c.emplace_back(p.column(p.F[k]));
     out.addVector("deformation_gradient", std::move(c));
   }
-  if (wanted("plastic_strain")) out.addScalar("plastic_strain", S(p.eqps));
+  if (wanted("plastic_strain")) out.addScalar("plastic_strain", S(p.column(p.eqps)));
   if (wanted("mass")) out.addScalar("mass", S(p.mass));
   if (wanted("volume")) out.addScalar("volume", S(p.vol));
   if (wanted("material")) {

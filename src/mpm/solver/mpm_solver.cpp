@@ -46,6 +46,17 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   bcs_ = BoundaryConditions(scene_.boundary, mesh, grid_->box());
   // 3. Constitutive models of the solids.
   models_ = createSolidModels(scene_);
+  // The particle columns this scene uses (ParticleLayout): the dimension's, loads', surface
+  // forces' (file loads here; a surface coupling adds them, enableSurfaceForces) and plastic ones.
+  {
+    ParticleLayout layout;
+    layout.dim = mesh.dim();
+    layout.loads = !scene_.loads.empty();
+    layout.surface = std::any_of(scene_.loads.begin(), scene_.loads.end(),
+                                 [](const core::LoadSpec& l) { return l.type == core::LoadType::File; });
+    layout.plastic = std::any_of(models_.begin(), models_.end(), [](const auto& m) { return m && m->plasticHistory(); });
+    p_.setLayout(layout);
+  }
   // 4. Particles of the cells this rank owns, their loads, then sorted by (material, cell).
   if (!contains)
     contains = [](const core::ShapeSpec& s, const core::RealVect& x, int dim) {
@@ -442,8 +453,8 @@ void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
     p_.F[1][i] = n1;
     p_.F[3][i] = n3;
     p_.F[4][i] = n4;
-    const double F8 = p_.F[8][i];
-    p_.vol[i] = p_.vol0[i] * (n0 * (n4 * F8) - n1 * (n3 * F8));
+    // F_zz is the exact 1 (not stored): n4 * 1 = n4, the 3D formula's figures.
+    p_.vol[i] = p_.vol0[i] * (n0 * n4 - n1 * n3);
   }
 }
 
@@ -538,9 +549,11 @@ void MpmSolver::addStressWork() {
           for (int b = 0; b < D; ++b) L[a][b] += vm * gr[b];
         }
       });
-      const double power = p_.stress[kXX][i] * L[0][0] + p_.stress[kYY][i] * L[1][1] +
-                           p_.stress[kZZ][i] * L[2][2] + p_.stress[kXY][i] * (L[0][1] + L[1][0]) +
-                           p_.stress[kYZ][i] * (L[1][2] + L[2][1]) + p_.stress[kXZ][i] * (L[0][2] + L[2][0]);
+      double power = p_.stress[kXX][i] * L[0][0] + p_.stress[kYY][i] * L[1][1] +
+                     p_.stress[kZZ][i] * L[2][2] + p_.stress[kXY][i] * (L[0][1] + L[1][0]);
+      // In 1D / 2D the yz and xz terms are exact zeros (and their stresses are not stored).
+      if constexpr (D == 3)
+        power = power + p_.stress[kYZ][i] * (L[1][2] + L[2][1]) + p_.stress[kXZ][i] * (L[0][2] + L[2][0]);
       p_.work[i] += dt * p_.vol[i] * power;
     }
   });

@@ -152,7 +152,14 @@ class MpmSolver {
   // ---- surface coupling (an interface-BC fluid such as OpenFOAM) ------------------------------
   /// From now on the particle column fsurf (force per particle, held from step to step until the
   /// coupler changes it) enters the internal force pass like a load.
-  void enableSurfaceForces() { surfaceForces_ = true; }
+  void enableSurfaceForces() {
+    surfaceForces_ = true;
+    if (!p_.layout().surface) {  // fsurf and surface are stored from now on (zeros)
+      ParticleLayout layout = p_.layout();
+      layout.surface = true;
+      p_.setLayout(layout);
+    }
+  }
   /// Makes mpm.stress_work "auto" mean "grid" (the volume coupling's solid side calls it before
   /// the first step).
   void useGridStressWorkByDefault() {

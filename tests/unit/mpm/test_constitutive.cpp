@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "mpm/material/constitutive_model.h"
@@ -339,4 +340,46 @@ TEST(J2Plasticity, PiecewiseLinearWithFailureFollowsTheTableToFailure) {
   const double L2[9] = {2 * d, 0, 0, 0, 0, 0, 0, 0, 0};
   strain(*m, p, L2, 1.0, 300);  // back into tension: the failed particle carries nothing
   for (int k = 0; k < 6; ++k) EXPECT_EQ(p.stress[k][0], 0.0);
+}
+
+// The planar form of the linear-elastic update (1D / 2D layouts, out-of-plane components not
+// stored) gives the 3D formula's bits for every stored component and the stress work.
+TEST(LinearElastic, PlanarUpdateGivesTheBitsOfTheThreeDimensionalFormula) {
+  auto model = createConstitutiveModel(spec("linear_elastic"), "test");
+  ParticleSet full, planar;
+  ParticleLayout layout;
+  layout.dim = 2;
+  planar.setLayout(layout);
+  std::uint64_t state = 12345;
+  auto rnd = [&]() {  // deterministic values in [-1, 1)
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 4503599627370496.0 - 1.0;
+  };
+  const int n = 200;
+  for (int i = 0; i < n; ++i) {
+    full.addParticle({0, 0, 0}, {0, 0, 0}, 1.0, 1.0 + 0.1 * rnd(), {0.5, 0.5, 0.5}, 0, 300, i);
+    planar.addParticle({0, 0, 0}, {0, 0, 0}, 1.0, full.vol[static_cast<std::size_t>(i)], {0.5, 0.5, 0.5}, 0, 300, i);
+    const auto k = static_cast<std::size_t>(i);
+    // Some exact zeros too (a particle at rest, a pure shear) where the signs of zeros matter.
+    const bool zero = i % 7 == 0;
+    for (int c : {0, 1, 3, 4}) {
+      const double l = zero ? 0.0 : 1e3 * rnd();
+      full.L[c][k] = planar.L[c][k] = l;
+    }
+    for (int c : {kXX, kYY, kZZ, kXY}) {
+      const double s = i % 11 == 0 ? 0.0 : 1e8 * rnd();
+      full.stress[c][k] = planar.stress[c][k] = s;
+    }
+    full.work[k] = planar.work[k] = i % 5 == 0 ? 0.0 : rnd();
+  }
+  for (int step = 0; step < 3; ++step) {
+    model->updateStress(full, 0, n, 1e-6);
+    model->updateStress(planar, 0, n, 1e-6);
+  }
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+    for (int c : {kXX, kYY, kZZ, kXY})
+      EXPECT_EQ(std::signbit(full.stress[c][i]), std::signbit(planar.stress[c][i])) << "stress " << c << " particle " << i;
+    for (int c : {kXX, kYY, kZZ, kXY}) ASSERT_EQ(full.stress[c][i], planar.stress[c][i]) << "stress " << c << " particle " << i;
+    ASSERT_EQ(full.work[i], planar.work[i]) << "work, particle " << i;
+  }
 }

@@ -90,8 +90,10 @@ void initialise(const Case& c, MpmSolver& solver) {
     for (int d = 0; d < c.dim; ++d) p.v[d][i] = 0.1 * u[d] * (1 + u2 - u[d] * u[d]);
     for (int d = 0; d < 3; ++d) p.stress[d][i] = 1e3 * (1 + u2 + u[d] * u[d]);
     p.stress[kXY][i] = 1e2 * u[0] * u[1];
-    p.stress[kYZ][i] = 1e2 * u[1] * u[2];
-    p.stress[kXZ][i] = 1e2 * u[0] * u[2];
+    if (c.dim == 3) {  // in 2D the yz and xz stresses are exact zeros, not stored
+      p.stress[kYZ][i] = 1e2 * u[1] * u[2];
+      p.stress[kXZ][i] = 1e2 * u[0] * u[2];
+    }
   }
 }
 
@@ -179,7 +181,8 @@ void compareWithFullBlock(const Case& c) {
   const auto& ph = half.particles();
   double sScale = 0, dMax = 0;
   for (std::size_t i = 0; i < ph.size(); ++i)
-    for (int k = 0; k < 6; ++k) sScale = std::max(sScale, std::fabs(ph.stress[k][i]));
+    for (int k = 0; k < 6; ++k)
+      if (ph.stored(ph.stress[k])) sScale = std::max(sScale, std::fabs(ph.stress[k][i]));
   for (std::size_t i = 0; i < ph.size(); ++i) {
     const std::size_t j = fullIndex.at(halfToFull.at(ph.id[i]));
     for (int d = 0; d < c.dim; ++d) {
@@ -187,6 +190,7 @@ void compareWithFullBlock(const Case& c) {
       EXPECT_NEAR(ph.v[d][i], pf.v[d][j], 1e-12 * vScale);
     }
     for (int k = 0; k < 6; ++k) {
+      if (!ph.stored(ph.stress[k])) continue;  // 2D: yz, xz are exact zeros, not stored
       EXPECT_NEAR(ph.stress[k][i], pf.stress[k][j], 1e-10 * sScale) << "stress " << k;
       dMax = std::max(dMax, std::fabs(ph.stress[k][i] - pf.stress[k][j]));
     }

@@ -361,3 +361,99 @@ TEST(Phases, CellEnergyOfACellWithoutParticlesReachesTheParticlesThroughItsNodes
   EXPECT_GT(warmed, 0);
   EXPECT_NEAR(heat, 50.0, 1e-8);  // dT of a particle at 300 K: 1e-16 of 300 K each
 }
+
+// ---- particle columns sized by dimension and models (ParticleLayout) ------------------------
+
+TEST(ParticleLayout, TwoDimensionalElasticStoresOnlyItsColumns) {
+  MpmSolver solver(blockScene(), self());
+  const ParticleSet& p = solver.particles();
+  ASSERT_GT(p.size(), 0u);
+  EXPECT_EQ(p.layout().dim, 2);
+  for (int k : {0, 1, 3, 4}) {
+    EXPECT_TRUE(p.stored(p.F[k])) << "F" << k;
+    EXPECT_TRUE(p.stored(p.L[k])) << "L" << k;
+  }
+  for (int k : {2, 5, 6, 7, 8}) {
+    EXPECT_TRUE(p.F[k].empty()) << "F" << k << " is an exact constant in 2D";
+    EXPECT_TRUE(p.L[k].empty()) << "L" << k << " is an exact zero in 2D";
+  }
+  for (int k : {kXX, kYY, kZZ, kXY}) EXPECT_TRUE(p.stored(p.stress[k])) << "stress " << k;
+  EXPECT_TRUE(p.stress[kYZ].empty());
+  EXPECT_TRUE(p.stress[kXZ].empty());
+  // No loads, no surface coupling, no plastic model: those columns are not stored.
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_TRUE(p.fext[d].empty());
+    EXPECT_TRUE(p.fsurf[d].empty());
+  }
+  EXPECT_TRUE(p.loadArea.empty());
+  EXPECT_TRUE(p.load.empty());
+  EXPECT_TRUE(p.surface.empty());
+  EXPECT_TRUE(p.eqps.empty());
+  EXPECT_TRUE(p.failed.empty());
+  // What a column not stored reads as (output): F_zz 1, the others 0.
+  for (double f : p.column(p.F[8])) EXPECT_EQ(f, 1.0);
+  for (double e : p.column(p.eqps)) EXPECT_EQ(e, 0.0);
+  EXPECT_EQ(p.column(p.F[8]).size(), p.size());
+}
+
+TEST(ParticleLayout, ThreeDimensionalAndPlasticScenesStoreTheirColumns) {
+  auto s = blockScene();
+  s.mesh = core::Mesh(3, {0, 0, 0}, {0.25, 0.25, 0.25}, {8, 8, 4});
+  s.geometry[0].shape.lo = {0.5, 0.5, 0.25};
+  s.geometry[0].shape.hi = {1.5, 1.0, 0.75};
+  s.geometry[0].particles_per_cell = {2, 2, 2};
+  MpmSolver three(s, self());
+  const ParticleSet& p = three.particles();
+  for (int k = 0; k < 9; ++k) EXPECT_TRUE(p.stored(p.F[k]) && p.stored(p.L[k])) << k;
+  for (int k = 0; k < 6; ++k) EXPECT_TRUE(p.stored(p.stress[k])) << k;
+  for (int k = 0; k < 9; k += 4) EXPECT_EQ(p.F[k][0], 1.0);
+  EXPECT_TRUE(p.eqps.empty());
+
+  auto j2 = blockScene();
+  j2.materials[0].constitutive = pr::elastic("j2_plasticity", 1e6, 0.25);
+  j2.materials[0].constitutive.params["yield_stress"] = 1e4;
+  MpmSolver plastic(j2, self());
+  EXPECT_TRUE(plastic.particles().stored(plastic.particles().eqps));
+  EXPECT_TRUE(plastic.particles().stored(plastic.particles().failed));
+  EXPECT_TRUE(plastic.particles().F[8].empty());
+}
+
+TEST(ParticleLayout, SurfaceForcesStoreTheirColumnsAsZeros) {
+  MpmSolver solver(blockScene(), self());
+  solver.enableSurfaceForces();
+  const ParticleSet& p = solver.particles();
+  for (int d = 0; d < 3; ++d) {
+    ASSERT_TRUE(p.stored(p.fsurf[d]));
+    for (double f : p.fsurf[d]) EXPECT_EQ(f, 0.0);
+  }
+  ASSERT_TRUE(p.stored(p.surface));
+  EXPECT_TRUE(p.fext[0].empty());  // the scene's loads, still none
+  solver.advance();                // the force pass reads fsurf and no fext
+  EXPECT_TRUE(std::isfinite(solver.particles().x[0][0]));
+}
+
+TEST(ParticleLayout, PackWritesEveryColumnWhateverTheLayout) {
+  MpmSolver solver(blockScene(), self());
+  const ParticleSet& p = solver.particles();
+  std::vector<double> buf;
+  p.pack(0, buf);
+  ASSERT_EQ(buf.size(), ParticleSet::packedSize());
+  ParticleSet full;  // the default layout stores every column
+  full.unpack(buf.data());
+  EXPECT_EQ(full.F[8][0], 1.0);
+  EXPECT_EQ(full.F[2][0], 0.0);
+  EXPECT_EQ(full.load[0], -1);
+  EXPECT_EQ(full.x[0][0], p.x[0][0]);
+  EXPECT_EQ(full.mass[0], p.mass[0]);
+  // And back into a 2D layout: the stored columns get the values.
+  ParticleSet planar;
+  ParticleLayout layout;
+  layout.dim = 2;
+  layout.loads = layout.surface = layout.plastic = false;
+  planar.setLayout(layout);
+  planar.unpack(buf.data());
+  EXPECT_EQ(planar.size(), 1u);
+  EXPECT_EQ(planar.F[0][0], p.F[0][0]);
+  EXPECT_TRUE(planar.F[8].empty());
+  EXPECT_TRUE(planar.load.empty());
+}

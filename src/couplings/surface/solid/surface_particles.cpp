@@ -19,6 +19,11 @@ long markSurfaceParticles(mpm::MpmSolver& mpm, int material) {
     return std::any_of(shapes.begin(), shapes.end(), [&](const core::ShapeSpec* s) { return s->contains(x, dim); });
   };
   auto& p = mpm.particles();
+  if (!p.layout().surface) {  // the surface columns are stored from the first marking on
+    mpm::ParticleLayout layout = p.layout();
+    layout.surface = true;
+    p.setLayout(layout);
+  }
   long count = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.surface[i] = 0.0;

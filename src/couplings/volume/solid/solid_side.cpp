@@ -83,10 +83,10 @@ core::ParticleOutput SolidSide::particleOutput() const {
   out.count = static_cast<std::int64_t>(n);
   for (int d = 0; d < 3; ++d) out.position[d] = span(p.x[d]);
   out.addScalar("mass", span(p.mass)).addScalar("volume", span(p.vol)).addScalar("temperature", span(p.temperature));
-  out.addScalar("plastic_strain", span(p.eqps));
+  out.addScalar("plastic_strain", span(p.column(p.eqps)));
   out.addVector("velocity", {span(p.v[0]), span(p.v[1]), span(p.v[2])});
   std::vector<std::span<const double>> st;
-  for (int c = 0; c < 6; ++c) st.push_back(span(p.stress[c]));
+  for (int c = 0; c < 6; ++c) st.push_back(span(p.column(p.stress[c])));
   out.addVector("stress", st);
   return out;
 }
