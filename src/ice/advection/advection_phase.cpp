@@ -38,41 +38,23 @@ void IceSolver::advectFluids() {
   const std::size_t npts = static_cast<std::size_t>(sb.numPts());
   if (adv_.mat.size() != static_cast<std::size_t>(nm)) {
     adv_.mat.assign(static_cast<std::size_t>(nm), {});
-    for (auto& am : adv_.mat)
+    for (int r = 0; r < nm; ++r) {
+      if (st_.mat[r].external) continue;
       for (int d = 0; d < dim; ++d)
-        am.faceFlux[d] = core::Field("flux", core::Centering::Cell, owned_.faces(d), kNumAcc, 0);
+        adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
+      adv_.mat[r].eint.resize(npts);
+    }
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
   }
-  for (int r = 0; r < nm; ++r) {
-    const MaterialState& m = st_.mat[r];
-    if (m.external) continue;
-    double* a[kNumAcc];
-    for (int q = 0; q < kNumAcc; ++q) {
-      adv_.mat[r].conserved[q].resize(npts);
-      a[q] = adv_.mat[r].conserved[q].data();
-    }
-    const double *ms = m.mass.data(), *e = m.eintL.data(), *v = m.spvolL.data();
-    const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
-    for (const std::int64_t c : ownedCells_) {
-      const double mass = ms[c];
-      double ke = 0;
-      for (int d = 0; d < 3; ++d) {
-        a[kMomX + d][c] = mass * u[d][c];
-        ke += u[d][c] * u[d][c];
-      }
-      a[kMass][c] = mass;
-      a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
-      a[kVolume][c] = mass * v[c];
-      a[kEint][c] = mass * e[c];
-    }
-  }
 
+  // Pass 1: the mass flux through every face (what the positivity scale needs) and each donor's
+  // outflow. The other fluxes are the mass flux times a face value (pass 2).
   core::Field& outScale = adv_.outflowScale;
   outScale.fill(0.0);
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   struct Ptr {
-    const double *th, *sv, *u[3], *e, *vL, *uf;
-    double* flux[kNumAcc];
+    const double *th, *sv, *uf;
+    double* flux;
     double* out;
     bool skip;
   };
@@ -84,15 +66,13 @@ void IceSolver::advectFluids() {
     const core::Box fb = owned_.faces(d);
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      Ptr& P = ptr[r];
-      P = {m.theta.data(), m.spvol.data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
-           m.spvolL.data(), m.velFace[d].data(), {}, outScale.data(r), m.external};
-      for (int q = 0; q < kNumAcc; ++q) P.flux[q] = adv_.mat[r].faceFlux[d].data(q);
+      ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
+                m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
     }
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t fi = fb.index(i, j, k);
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-      double th1[kMaxMaterials], th2[kMaxMaterials], flux[kMaxMaterials][kNumAcc];
+      double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
       double s1 = 0, s2 = 0;
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
@@ -112,18 +92,7 @@ void IceSolver::advectFluids() {
         th2[r] = face(P.th);
         s1 += th1[r];
         s2 += th2[r];
-        double* fl = flux[r];
-        fl[kMass] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
-        double ke = 0;
-        for (int q = 0; q < 3; ++q) {
-          const double uq = q < dim ? face(P.u[q]) : P.u[q][D];
-          fl[kMomX + q] = uq;
-          ke += uq * uq;
-        }
-        const double ef = face(P.e);
-        fl[kEnergy] = ef + 0.5 * ke;
-        fl[kVolume] = face(P.vL);
-        fl[kEint] = ef;
+        fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
       }
       const double scale = s2 > 0 ? s1 / s2 : 0.0;
       const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
@@ -131,13 +100,11 @@ void IceSolver::advectFluids() {
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
         if (th1[r] == 0 && th2[r] == 0) {
-          P.flux[0][fi] = 0;
+          if (!P.skip) P.flux[fi] = 0;
           continue;
         }
-        const double* fl = flux[r];
-        const double F = fl[kMass] * th2[r] * scale;
-        P.flux[0][fi] = F;
-        for (int q = 1; q < kNumAcc; ++q) P.flux[q][fi] = F * fl[q];
+        const double F = fm[r] * th2[r] * scale;
+        P.flux[fi] = F;
         // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
         if (F > 0 && ownL) P.out[cL] += F;
         if (F < 0 && ownR) P.out[cR] -= F;
@@ -154,29 +121,84 @@ void IceSolver::advectFluids() {
     for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
   }
   ghosts_->fill(outScale);
+
+  // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
+  // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
+  // (internal energy), m v (specific volume); m e in the scratch. advected::k* order.
+  auto accumulators = [&](MaterialState& m, double** a) {
+    a[kMass] = m.mass.data();
+    for (int d = 0; d < 3; ++d) a[kMomX + d] = m.vel.data(d);
+    a[kEnergy] = m.eint.data();
+    a[kVolume] = m.spvol.data();
+    a[kEint] = adv_.mat[static_cast<std::size_t>(&m - st_.mat.data())].eint.data();
+  };
+  for (int r = 0; r < nm; ++r) {
+    MaterialState& m = st_.mat[r];
+    if (m.external) continue;
+    double* a[kNumAcc];
+    accumulators(m, a);
+    const double *e = m.eintL.data(), *v = m.spvolL.data();
+    const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    for (const std::int64_t c : ownedCells_) {
+      const double mass = a[kMass][c];
+      double ke = 0;
+      for (int d = 0; d < 3; ++d) {
+        a[kMomX + d][c] = mass * u[d][c];
+        ke += u[d][c] * u[d][c];
+      }
+      a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
+      a[kVolume][c] = mass * v[c];
+      a[kEint][c] = mass * e[c];
+    }
+  }
+
+  // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
+  // the owned cells on both sides.
   for (int d = 0; d < dim; ++d) {
+    const double dx = mesh_.dx(d);
     const std::int64_t sd = strides[d];
     const core::Box fb = owned_.faces(d);
     for (int r = 0; r < nm; ++r) {
-      if (st_.mat[r].external) continue;
-      const core::Field& ff = adv_.mat[r].faceFlux[d];
+      MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      const double* Fm = adv_.mat[r].massFlux[d].data();
       const double* sc = outScale.data(r);
+      const double* uf = m.velFace[d].data();
+      const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
+                   *vL = m.spvolL.data();
       double* a[kNumAcc];
-      const double* f[kNumAcc];
-      for (int q = 0; q < kNumAcc; ++q) {
-        a[q] = adv_.mat[r].conserved[q].data();
-        f[q] = ff.data(q);
-      }
+      accumulators(m, a);
       forEach(fb, [&](int i, int j, int k) {
         const std::int64_t fi = fb.index(i, j, k);
-        const double F = f[0][fi];
+        const double F = Fm[fi];
         if (F == 0) return;
         const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
         const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
         const bool ownR = owned_.contains(i, j, k);
         const double lam = F > 0 ? sc[cL] : sc[cR];
+        const double ufi = uf[fi];
+        const std::int64_t D = ufi > 0 ? cL : cR;
+        const double sgn = ufi > 0 ? 1.0 : -1.0;
+        const double w = 0.5 * sgn * (1.0 - std::abs(ufi) * dt / dx);
+        auto face = [&](const double* f) {
+          const double q0 = f[D];
+          if (!second) return q0;
+          return q0 + w * limitedSlope(lim, q0 - f[D - sd], f[D + sd] - q0);
+        };
+        double fl[kNumAcc];
+        double ke = 0;
+        for (int q = 0; q < 3; ++q) {
+          const double uq = q < dim ? face(u[q]) : u[q][D];
+          fl[kMomX + q] = F * uq;
+          ke += uq * uq;
+        }
+        const double ef = face(eL);
+        fl[kMass] = F;
+        fl[kEnergy] = F * (ef + 0.5 * ke);
+        fl[kVolume] = F * face(vL);
+        fl[kEint] = F * ef;
         for (int q = 0; q < kNumAcc; ++q) {
-          const double v = lam * f[q][fi];
+          const double v = lam * fl[q];
           if (ownL) a[q][cL] -= v;
           if (ownR) a[q][cR] += v;
         }
@@ -192,8 +214,8 @@ void IceSolver::advectFluids() {
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     if (m.external) continue;
-    const double* a[kNumAcc];
-    for (int q = 0; q < kNumAcc; ++q) a[q] = adv_.mat[r].conserved[q].data();
+    double* a[kNumAcc];
+    accumulators(m, a);
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
     const double *eL = m.eintL.data(), *vL = m.spvolL.data();

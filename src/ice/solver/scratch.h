@@ -25,19 +25,19 @@ struct SemiImplicitScratch {
   std::unique_ptr<linear::HypreStructPcg> hypre;  // pfmg_pcg, smg_pcg: grid and matrix kept
 };
 
-/// The quantities the advection carries, as components of its accumulators and face fluxes.
+/// The quantities the advection carries (the order of the terms of its face fluxes).
 namespace advected {
 enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 }
 
-/// Phase 12: per material the conserved amounts per cell and the face fluxes; the donors'
-/// positivity scale.
+/// Phase 12: per material the mass flux through each face (the other fluxes are that times a
+/// face value, computed again where they are applied), the directly advected internal energy
+/// m e per cell (the other conserved amounts are accumulated in the state's own fields), and the
+/// donors' positivity scale.
 struct AdvectionScratch {
   struct Material {
-    /// Per stored cell: m, m u (3 components), m (e + |u|^2 / 2), m v, m e (advected::k*).
-    std::array<std::vector<double>, advected::kCount> conserved;
-    /// advected::kCount components per face normal to each direction.
-    std::array<core::Field, 3> faceFlux;
+    std::vector<double> eint;               // m e per stored cell
+    std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
   };
   std::vector<Material> mat;
   core::Field outflowScale;  // one component per material: scale of each donor's outflow
