@@ -206,11 +206,12 @@ void IceSolver::advectFluids() {
     }
   }
 
-  // The cells' fluid mass after advection, for the negligible-trace cut-off below.
+  // The cells' fluid mass after advection (the mass fields hold it now), for the negligible-trace
+  // cut-off below.
   adv_.fluidMass.assign(npts, 0.0);
   for (int r = 0; r < nm; ++r)
     if (!st_.mat[r].external)
-      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += adv_.mat[r].conserved[kMass][c];
+      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += st_.mat[r].mass.data()[c];
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     if (m.external) continue;
