@@ -12,7 +12,9 @@
 // the annulus) and p_ref from the solid; without it, the seed's legacy measure (r_i 0.5, r_o 1.0,
 // S = 2 P r_i^2 / (r_o^2 - r_i^2) with the absolute P: the figures of docs/coupling.md).
 // With a plot prefix it writes <prefix>.csv (the particles nearest the x-axis: r, sigma_r,
-// sigma_theta and the Lame values) and <prefix>.png through gnuplot.
+// sigma_theta and the Lame values) and <prefix>.png through gnuplot. It first prints the gas leak:
+// the fraction of the fluids' mass inside r_i at the first output step that is no longer inside
+// r_i at the last (study/reference/lame_cylinder.h, gasLeak).
 // 1. Find the last step's files.  2. Read P.  3. Particle stresses -> error.  4. Profile + plot.
 #include <algorithm>
 #include <cmath>
@@ -51,6 +53,12 @@ int main(int argc, char** argv) {
     // 1. Files.  2. P.  3. Particles -> error (src/study/reference/lame_cylinder.h).
     const std::filesystem::path base(args[0]);
     const std::string dir = base.parent_path().empty() ? "." : base.parent_path().string();
+    // 0. The gas leak through the wall (first to last output step; also for a run that stopped).
+    const auto leak = mpmice::study::gasLeak(dir, base.filename().string(), geo);
+    std::printf("cylinder_lame: gas inside r_i: %.6g kg (step %d, t = %.4g s) -> %.6g kg (step %d, t = %.4g s): "
+                "leak %.4g of it; the gas in the wall's cells (r_i..r_o) %.6g -> %.6g kg (per unit depth)\n",
+                leak.inside0, leak.firstStep, leak.firstTime, leak.inside, leak.lastStep, leak.lastTime,
+                leak.fraction(), leak.wall0, leak.wall);
     const auto r = mpmice::study::lameError(dir, base.filename().string(), geo);
     const double A = r.A, B = r.B, err = r.error, dx = r.dx;
     const std::size_t n = r.particles, nBand = r.bandParticles, sc = r.stressComponents;

@@ -1,5 +1,6 @@
 #include "ice/solver/health_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -25,8 +26,9 @@ std::string describe(const IceSolver& s, const std::string& quantity, const std:
 }  // namespace
 
 namespace {
-// The first violation in cell (i,j,k) of the stored box index c, "" when there is none.
-std::string cellViolation(const IceSolver& s, int i, int j, int k, std::int64_t c) {
+// The first violation in cell (i,j,k) of the stored box index c, "" when there is none (the
+// quantity, material, cell and time; cellViolation adds the cell's contents and why).
+std::string cellViolationOnly(const IceSolver& s, int i, int j, int k, std::int64_t c) {
   const IceState& st = s.state();
   const int dim = s.mesh().dim();
   auto bad = [&](const std::string& q, const std::string& mat, double v, const std::string& expected) {
@@ -119,6 +121,83 @@ std::string auditViolation(const IceSolver& s) {
       << s.state().mat[static_cast<std::size_t>(a.worstMaterial)].name << "'";
   return describe(s, "energy created by the non-conservative internal-energy fallbacks [J]", "", a.created,
                   exp.str(), i, j, k);
+}
+}  // namespace
+
+namespace {
+// "; the cell holds 'a' (theta .., density .. kg/m^3, |u| .. m/s), ..." over the materials present
+// in stored cell c (density: the material's own, mass / (theta V)).
+std::string cellContents(const IceSolver& s, std::int64_t c) {
+  const IceState& st = s.state();
+  const double V = s.mesh().cellVolume();
+  std::ostringstream os;
+  os.precision(4);
+  bool first = true;
+  for (const MaterialState& m : st.mat) {
+    const double th = m.theta.data()[c], mass = m.mass.data()[c];
+    if (!(th > kPresentFraction)) continue;
+    double u2 = 0;
+    for (int d = 0; d < 3; ++d) u2 += m.vel.data(d)[c] * m.vel.data(d)[c];
+    os << (first ? "; the cell holds '" : ", '") << m.name << "' (theta " << th << ", density " << mass / (th * V)
+       << " kg/m^3, |u| " << std::sqrt(u2) << " m/s)";
+    first = false;
+  }
+  return os.str();
+}
+}  // namespace
+
+std::string weakExchangeNote(const IceSolver& s, int i, int j, int k, int fluid, double dtJudge) {
+  const IceState& st = s.state();
+  const core::Box& ob = s.ownedBox();
+  const core::Box& sb = st.press.box();
+  const int dim = s.mesh().dim();
+  const MaterialState& f = st.mat.at(static_cast<std::size_t>(fluid));
+  if (f.external) return "";
+  const std::int64_t c = sb.index(i, j, k);
+  const double thf = f.theta.data()[c], mf = f.mass.data()[c];
+  if (!(thf > 0) || !(mf > 0)) return "";
+  const double rho = mf / (thf * s.mesh().cellVolume());
+  // The solid with the largest volume fraction in the cell and its owned neighbours.
+  int solid = -1, at[3] = {i, j, k};
+  double ths = 0;
+  const int lo[3] = {std::max(i - 1, ob.lo[0]), dim > 1 ? std::max(j - 1, ob.lo[1]) : j, dim > 2 ? std::max(k - 1, ob.lo[2]) : k};
+  const int hi[3] = {std::min(i + 1, ob.hi[0]), dim > 1 ? std::min(j + 1, ob.hi[1]) : j, dim > 2 ? std::min(k + 1, ob.hi[2]) : k};
+  for (int r = 0; r < static_cast<int>(st.mat.size()); ++r) {
+    const MaterialState& m = st.mat[static_cast<std::size_t>(r)];
+    if (!m.external) continue;
+    for (int kk = lo[2]; kk <= hi[2]; ++kk)
+      for (int jj = lo[1]; jj <= hi[1]; ++jj)
+        for (int ii = lo[0]; ii <= hi[0]; ++ii) {
+          const double th = m.theta.data()[sb.index(ii, jj, kk)];
+          if (th > ths) ths = th, solid = r, at[0] = ii, at[1] = jj, at[2] = kk;
+        }
+  }
+  if (solid < 0 || !(ths > kPresentFraction)) return "";
+  const double K = s.momentumExchange(fluid, solid), dt = dtJudge < 0 ? s.dt() : dtJudge;
+  const double share = dt * K * ths / rho;
+  if (!(share < 1)) return "";  // the exchange holds the fluid to the solid within a step
+  std::ostringstream os;
+  os.precision(4);
+  os << "; weak momentum exchange: '" << f.name << "' and '" << st.mat[static_cast<std::size_t>(solid)].name
+     << "' (theta " << ths << " in cell (" << at[0] << "," << at[1] << "," << at[2] << ")) exchange momentum with K = " << K
+     << " kg/(m^3 s) (ice.exchange.momentum or ice.exchange_pairs), which removes dt K theta_s / rho = " << share
+     << " of their velocity difference per step (dt " << dt << " s, rho " << rho
+     << " kg/m^3): the solid does not hold the fluid, and a pressure difference across the solid drives the fluid "
+        "through it (to the fluid the solid is a porous medium with slip velocity |grad p| / (K theta_s)); a K that "
+        "removes many times the difference per step (the default 1e15) makes it a wall";
+  return os.str();
+}
+
+namespace {
+// The first violation in cell (i,j,k) of the stored box index c, "" when there is none.
+std::string cellViolation(const IceSolver& s, int i, int j, int k, std::int64_t c) {
+  const std::string bad = cellViolationOnly(s, i, j, k, c);
+  if (bad.empty()) return bad;
+  std::string note;
+  for (int r = 0; r < static_cast<int>(s.state().mat.size()) && note.empty(); ++r)
+    if (bad.find("'" + s.state().mat[static_cast<std::size_t>(r)].name + "'") != std::string::npos)
+      note = weakExchangeNote(s, i, j, k, r);
+  return bad + cellContents(s, c) + note;
 }
 }  // namespace
 

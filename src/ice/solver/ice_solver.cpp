@@ -8,6 +8,7 @@
 
 #include "core/health/health.h"
 #include "ice/ice_constants.h"
+#include "ice/solver/health_check.h"
 #include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
@@ -208,6 +209,15 @@ std::string IceSolver::stableTimeStepLimit() const {
          << " kg/m^3, |u| " << std::sqrt(u) << " m/s, c " << std::sqrt(m.spvol.data()[c] / m.kappa.data()[c])
          << " m/s)";
     }
+    // Why the fluid there is not held by a solid nearby (health_check.h).
+    for (int r = 0; r < numMaterials(); ++r)
+      if (!st_.mat[r].external && st_.mat[r].theta.data()[c] > kPresentFraction) {
+        const std::string note = weakExchangeNote(*this, ijk[0], ijk[1], ijk[2], r, dt);
+        if (!note.empty()) {
+          os << note;
+          break;
+        }
+      }
   }
   return comm_.firstMessage(os.str());
 }

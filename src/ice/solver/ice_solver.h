@@ -120,6 +120,11 @@ class IceSolver {
   [[nodiscard]] const IceState& state() const { return st_; }
   [[nodiscard]] IceState& state() { return st_; }
   [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
+  /// The momentum exchange coefficient K of materials a and b [kg/(m^3 s)] (ice.exchange.momentum,
+  /// ice.exchange_pairs; 0 for a == b).
+  [[nodiscard]] double momentumExchange(int a, int b) const {
+    return K_[static_cast<std::size_t>(a * numMaterials() + b)];
+  }
   [[nodiscard]] const core::Mesh& mesh() const { return mesh_; }
   [[nodiscard]] const core::Decomposition& decomposition() const { return decomp_; }
   [[nodiscard]] const core::Box& ownedBox() const { return owned_; }

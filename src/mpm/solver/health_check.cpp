@@ -41,7 +41,7 @@ bool particlesOk(const ParticleSet& p, std::size_t b, std::size_t e, int dim, do
 inline bool waveSpeedOk(double c) { return c > 0 && c < core::kMaxSoundSpeed; }
 }  // namespace
 
-std::string findViolation(const MpmSolver& s) {
+std::string findViolation(const MpmSolver& s, double* where) {
   const ParticleSet& p = s.particles();
   const int dim = s.scene().mesh.dim();
   const auto& mats = s.scene().materials;
@@ -76,7 +76,9 @@ std::string findViolation(const MpmSolver& s) {
       }
       if (!q) continue;
       double x[3];
-      for (int d = 0; d < 3; ++d) x[d] = p.x[d][i];
+      for (int d = 0; d < 3; ++d) x[d] = d < dim ? p.x[d][i] : 0.0;
+      if (where)
+        for (int d = 0; d < 3; ++d) where[d] = x[d];
       std::ostringstream os;
       os.precision(6);
       os << "mpm: non-physical state: " << q << " of solid '" << mats[m].name << "' = " << v << " (expected "

@@ -11,8 +11,9 @@
 
 namespace mpmice::mpm {
 
-/// The first violation among this rank's particles, "" when there is none. Local.
-[[nodiscard]] std::string findViolation(const MpmSolver& solver);
+/// The first violation among this rank's particles, "" when there is none. Local. With `where`
+/// (3 doubles), the violating particle's position goes there (unused directions 0).
+[[nodiscard]] std::string findViolation(const MpmSolver& solver, double* where = nullptr);
 /// Throws core::HealthError on every rank when any rank finds a violation. Collective.
 void checkHealth(const MpmSolver& solver);
 

@@ -25,6 +25,9 @@ Annulus annulusOf(const core::Scene& s, const std::string& file) {
         solid = s.materialIndex(f.material);
       }
   if (solid < 0) throw std::runtime_error(file + ": no solid annulus in the geometry");
+  a.fluids.clear();
+  for (const auto& m : s.materials)
+    if (m.kind == core::MaterialKind::Fluid) a.fluids.push_back(m.name);
   a.pRef = s.materials[static_cast<std::size_t>(solid)].eos.get("threshold_pressure", 101325.0);
   a.pAmbient = -1;
   for (const auto& b : s.boundary)
@@ -91,6 +94,53 @@ LameError lameError(const std::string& dir, const std::string& scene, const Annu
   r.x = x.values;
   r.stress = s.values;
   return r;
+}
+
+namespace {
+/// The fluids' mass of one output step inside r_i and in the wall's cells.
+void fluidMassByRegion(const std::string& file, const Annulus& geo, double& inside, double& wall) {
+  const OutputReader r(file);
+  const auto mesh = r.mesh();
+  const double V = mesh.cellVolume();
+  const int nx = mesh.cells()[0], ny = mesh.cells()[1];
+  inside = wall = 0;
+  long nInside = 0;
+  for (const std::string& fluid : geo.fluids) {
+    if (!r.hasGridField(Centering::Cell, fluid + "_density"))
+      throw std::runtime_error(file + ": no cell field '" + fluid + "_density' (the fluid's mass per cell volume)");
+    const auto rho = r.readGridField(Centering::Cell, fluid + "_density");  // mass / cell volume
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double rad = std::hypot(mesh.cellCenter(0, i), mesh.cellCenter(1, j));
+        const double m = rho.values[static_cast<std::size_t>(i + nx * j)] * V;
+        if (rad < geo.ri) {
+          inside += m;
+          ++nInside;
+        } else if (rad < geo.ro) {
+          wall += m;
+        }
+      }
+  }
+  if (nInside == 0) throw std::runtime_error(file + ": no cell centre inside r_i to measure the gas leak");
+}
+}  // namespace
+
+GasLeak gasLeak(const std::string& dir, const std::string& scene, const Annulus& geo) {
+  const OutputSpan files = outputSpan(dir, scene);
+  if (files.firstGrid.empty()) throw std::runtime_error("no fluid output of scene '" + scene + "' in " + dir);
+  GasLeak g;
+  g.firstGrid = files.firstGrid;
+  g.lastGrid = files.last.grid;
+  {
+    const OutputReader first(files.firstGrid), last(files.last.grid);
+    g.firstStep = first.step();
+    g.firstTime = first.time();
+    g.lastStep = last.step();
+    g.lastTime = last.time();
+  }
+  fluidMassByRegion(files.firstGrid, geo, g.inside0, g.wall0);
+  fluidMassByRegion(files.last.grid, geo, g.inside, g.wall);
+  return g;
 }
 
 }  // namespace mpmice::study

@@ -18,6 +18,7 @@ namespace mpmice::study {
 struct Annulus {
   double ri = 0.5, ro = 1.0, pAmbient = 0, pRef = 0;  // legacy: the seed, absolute pressure
   bool fromScene = false;
+  std::vector<std::string> fluids{"air"};  // the fluid materials (output fields <fluid>_density)
 };
 
 /// The radii from the solid's annulus, p_amb from the outflow boundary pressure (else the fluid
@@ -49,5 +50,24 @@ struct LameError {
 /// Eq. 13 of the run whose output is `<dir>/<scene>_...h5`, with the annulus `geo`. Throws when
 /// the run left no output (or no cell inside 0.8 r_i).
 LameError lameError(const std::string& dir, const std::string& scene, const Annulus& geo);
+
+/// How much of the gas inside the inner radius got out through the wall: the fluids' mass in the
+/// cells whose centre lies inside r_i, at the first and at the last output step, and in the
+/// wall's cells (r_i <= r < r_o). The heating adds no mass and the wall's strain moves r_i by
+/// ~1e-4 of a cell, so what the inside loses left through (or into) the wall.
+struct GasLeak {
+  std::string firstGrid, lastGrid;
+  int firstStep = 0, lastStep = 0;
+  double firstTime = 0, lastTime = 0;
+  double inside0 = 0, inside = 0;  // fluid mass inside r_i [kg per unit depth in 2D]
+  double wall0 = 0, wall = 0;      // fluid mass in the wall's cells
+  /// (inside0 - inside) / inside0: the leak fraction.
+  [[nodiscard]] double fraction() const { return inside0 > 0 ? (inside0 - inside) / inside0 : 0.0; }
+};
+
+/// The gas leak of the run whose output is `<dir>/<scene>_...h5` (first and last output step).
+/// Throws when the run left no output, a fluid's density field is missing, or no cell centre lies
+/// inside r_i.
+GasLeak gasLeak(const std::string& dir, const std::string& scene, const Annulus& geo);
 
 }  // namespace mpmice::study

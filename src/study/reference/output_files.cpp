@@ -43,7 +43,11 @@ OutputSpan outputSpan(const std::string& dirName, const std::string& scene) {
   o.last = lastOutput(dirName, scene);
   const fs::path dir = folder(dirName);
   o.firstParticles = endFile(dir, scene + "_[0-9]+\\.h5", false);
-  if (o.firstParticles.empty()) o.firstParticles = endFile(dir, scene + "_solid_[0-9]+\\.h5", false);
+  o.firstGrid = o.firstParticles;
+  if (o.firstParticles.empty()) {
+    o.firstParticles = endFile(dir, scene + "_solid_[0-9]+\\.h5", false);
+    o.firstGrid = endFile(dir, scene + "_fluid_[0-9]+\\.h5", false);
+  }
   return o;
 }
 

@@ -12,10 +12,10 @@ struct LastOutput {
 };
 LastOutput lastOutput(const std::string& dir, const std::string& scene);
 
-/// The last output step and the first step's particles (the initial state).
+/// The last output step and the first step's particles and grid (the initial state).
 struct OutputSpan {
   LastOutput last;
-  std::string firstParticles;
+  std::string firstParticles, firstGrid;
 };
 OutputSpan outputSpan(const std::string& dir, const std::string& scene);
 

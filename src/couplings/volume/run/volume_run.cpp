@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -27,13 +28,36 @@ namespace mpmice::coupler {
 namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
+// A solid's violation at x in a run that holds the fluid too (mpmice): why the fluid of x's cell is
+// not held by the solid (ice::weakExchangeNote), "" when it is, or when another rank owns the cell.
+std::string fluidNoteAt(const ice::IceSolver& fluid, const double* x) {
+  const core::Mesh& mesh = fluid.mesh();
+  int c[3] = {0, 0, 0};
+  for (int d = 0; d < mesh.dim(); ++d) {
+    if (!std::isfinite(x[d])) return "";  // a particle position that is not finite
+    c[d] = std::clamp(mesh.cellOf(d, x[d]), 0, mesh.cells()[d] - 1);
+  }
+  if (!fluid.ownedBox().contains(c[0], c[1], c[2])) return "";
+  const core::Box& sb = fluid.state().press.box();
+  for (int r = 0; r < fluid.numMaterials(); ++r) {
+    const ice::MaterialState& m = fluid.state().mat[static_cast<std::size_t>(r)];
+    if (m.external || !(m.theta.data()[sb.index(c[0], c[1], c[2])] > 0)) continue;
+    const std::string note = ice::weakExchangeNote(fluid, c[0], c[1], c[2], r);
+    if (!note.empty()) return "; in its cell (" + std::to_string(c[0]) + "," + std::to_string(c[1]) + "," +
+                              std::to_string(c[2]) + ") of the fluid" + note;
+  }
+  return "";
+}
+
 // The health check of each side present (collective); in an MPMD launch the two programs trade
 // their verdicts, so both stop together (the side that found the violation names it), and with
 // them this process's compute and exchange seconds of the step (`split`): returns the peer's.
 std::array<double, 2> checkHealth(const Sides& sides, Transport& transport, const core::Comm& comm,
                                   const std::string& label, bool mpmd, std::array<double, 2> split) {
   std::string bad;
-  if (sides.solid) bad = mpm::findViolation(sides.solid->solver());
+  double at[3] = {0, 0, 0};
+  if (sides.solid) bad = mpm::findViolation(sides.solid->solver(), at);
+  if (!bad.empty() && sides.fluid) bad += fluidNoteAt(sides.fluid->solver(), at);
   if (bad.empty() && sides.fluid) bad = ice::findViolation(sides.fluid->solver());
   bad = comm.firstMessage(bad);
   std::vector<double> peer{0.0, 0.0, 0.0};
