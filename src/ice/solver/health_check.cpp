@@ -180,7 +180,7 @@ std::string weakExchangeNote(const IceSolver& s, int i, int j, int k, int fluid,
   os.precision(4);
   os << "; weak momentum exchange: '" << f.name << "' and '" << st.mat[static_cast<std::size_t>(solid)].name
      << "' (theta " << ths << " in cell (" << at[0] << "," << at[1] << "," << at[2] << ")) exchange momentum with K = " << K
-     << " kg/(m^3 s) (ice.exchange.momentum or ice.exchange_pairs), which removes dt K theta_s / rho = " << share
+     << " kg/(m^3 s) (ice.exchange.momentum, or ice.exchange.pairs for the pair), which removes dt K theta_s / rho = " << share
      << " of their velocity difference per step (dt " << dt << " s, rho " << rho
      << " kg/m^3): the solid does not hold the fluid, and a pressure difference across the solid drives the fluid "
         "through it (to the fluid the solid is a porous medium with slip velocity |grad p| / (K theta_s)); a K that "

@@ -121,7 +121,7 @@ class IceSolver {
   [[nodiscard]] IceState& state() { return st_; }
   [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
   /// The momentum exchange coefficient K of materials a and b [kg/(m^3 s)] (ice.exchange.momentum,
-  /// ice.exchange_pairs; 0 for a == b).
+  /// ice.exchange.pairs; 0 for a == b).
   [[nodiscard]] double momentumExchange(int a, int b) const {
     return K_[static_cast<std::size_t>(a * numMaterials() + b)];
   }
