@@ -27,6 +27,7 @@ constexpr int kNumAcc = kCount;
 }  // namespace
 
 void IceSolver::advectFluids() {
+  mixesValid_ = false;  // mass and velocity change here
   fillMaterialGhosts(true);
   const int dim = mesh_.dim();
   const int nm = numMaterials();
