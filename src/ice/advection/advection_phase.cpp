@@ -24,16 +24,36 @@ using core::forEach;
 namespace {
 using namespace advected;
 constexpr int kNumAcc = kCount;
+
+// The face reconstruction, chosen once per advection (the face loops are instantiated for each):
+// donor cell (first order) or the limited linear one with limiter L.
+template <bool Second, Limiter L>
+struct Recon {};
+
+// At a face with velocity uf between cells cL and cR = cL + sd: the donor cell D and the
+// time-centred face value of a cell field f, f[D] (first order) or f[D] + w slope_L(f) with
+// w = sgn(uf) (1 - |uf| dt / dx) / 2 (both passes use this one helper).
+template <bool Second, Limiter L>
+struct FaceValue {
+  std::int64_t D, sd;
+  double w;
+  FaceValue(Recon<Second, L>, double uf, std::int64_t cL, std::int64_t sd_, double dt, double dx)
+      : D(uf > 0 ? cL : cL + sd_), sd(sd_), w(0.5 * (uf > 0 ? 1.0 : -1.0) * (1.0 - std::abs(uf) * dt / dx)) {}
+  double operator()(const double* f) const {
+    const double q0 = f[D];
+    if constexpr (!Second) return q0;
+    else return q0 + w * limitedSlope<L>(q0 - f[D - sd], f[D + sd] - q0);
+  }
+};
 }  // namespace
 
 void IceSolver::advectFluids() {
+  mixesValid_ = false;  // mass and velocity change here
   fillMaterialGhosts(true);
   const int dim = mesh_.dim();
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
   const double dt = dt_;
-  const Limiter lim = static_cast<Limiter>(limiter_);
-  const bool second = secondOrder_;
   const core::Box& sb = st_.press.box();
   const std::size_t npts = static_cast<std::size_t>(sb.numPts());
   if (adv_.mat.size() != static_cast<std::size_t>(nm)) {
@@ -47,84 +67,9 @@ void IceSolver::advectFluids() {
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
   }
 
-  // Pass 1: the mass flux through every face (what the positivity scale needs) and each donor's
-  // outflow. The other fluxes are the mass flux times a face value (pass 2).
   core::Field& outScale = adv_.outflowScale;
-  outScale.fill(0.0);
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
-  struct Ptr {
-    const double *th, *sv, *uf;
-    double* flux;
-    double* out;
-    bool skip;
-  };
-  std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
-  for (int d = 0; d < dim; ++d) {
-    const double dx = mesh_.dx(d);
-    const double A = V / dx;
-    const std::int64_t sd = strides[d];
-    const core::Box fb = owned_.faces(d);
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
-                m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
-    }
-    forEach(fb, [&](int i, int j, int k) {
-      const std::int64_t fi = fb.index(i, j, k);
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-      double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
-      double s1 = 0, s2 = 0;
-      for (int r = 0; r < nm; ++r) {
-        const Ptr& P = ptr[r];
-        th1[r] = th2[r] = 0;
-        if (P.skip) continue;
-        const double uf = P.uf[fi];
-        if (uf == 0) continue;
-        const std::int64_t D = uf > 0 ? cL : cR;
-        const double sgn = uf > 0 ? 1.0 : -1.0;
-        const double w = 0.5 * sgn * (1.0 - std::abs(uf) * dt / dx);
-        auto face = [&](const double* f) {
-          const double q0 = f[D];
-          if (!second) return q0;
-          return q0 + w * limitedSlope(lim, q0 - f[D - sd], f[D + sd] - q0);
-        };
-        th1[r] = P.th[D];
-        th2[r] = face(P.th);
-        s1 += th1[r];
-        s2 += th2[r];
-        fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
-      }
-      const double scale = s2 > 0 ? s1 / s2 : 0.0;
-      const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
-      const bool ownR = owned_.contains(i, j, k);
-      for (int r = 0; r < nm; ++r) {
-        const Ptr& P = ptr[r];
-        if (th1[r] == 0 && th2[r] == 0) {
-          if (!P.skip) P.flux[fi] = 0;
-          continue;
-        }
-        const double F = fm[r] * th2[r] * scale;
-        P.flux[fi] = F;
-        // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
-        if (F > 0 && ownL) P.out[cL] += F;
-        if (F < 0 && ownR) P.out[cR] -= F;
-      }
-    });
-  }
-
-  // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
-  // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
-  for (int r = 0; r < nm; ++r) {
-    const double* ms = st_.mat[r].mass.data();
-    double* sc = outScale.data(r);
-    const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
-    for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
-  }
-  ghosts_->fill(outScale);
-
-  // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
-  // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
-  // (internal energy), m v (specific volume); m e in the scratch. advected::k* order.
+  // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order).
   auto accumulators = [&](MaterialState& m, double** a) {
     a[kMass] = m.mass.data();
     for (int d = 0; d < 3; ++d) a[kMomX + d] = m.vel.data(d);
@@ -132,78 +77,151 @@ void IceSolver::advectFluids() {
     a[kVolume] = m.spvol.data();
     a[kEint] = adv_.mat[static_cast<std::size_t>(&m - st_.mat.data())].eint.data();
   };
-  for (int r = 0; r < nm; ++r) {
-    MaterialState& m = st_.mat[r];
-    if (m.external) continue;
-    double* a[kNumAcc];
-    accumulators(m, a);
-    const double *e = m.eintL.data(), *v = m.spvolL.data();
-    const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
-    for (const std::int64_t c : ownedCells_) {
-      const double mass = a[kMass][c];
-      double ke = 0;
-      for (int d = 0; d < 3; ++d) {
-        a[kMomX + d][c] = mass * u[d][c];
-        ke += u[d][c] * u[d][c];
+  // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
+  auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
+    // Pass 1: the mass flux through every face (what the positivity scale needs) and each donor's
+    // outflow. The other fluxes are the mass flux times a face value (pass 2).
+    outScale.fill(0.0);
+    struct Ptr {
+      const double *th, *sv, *uf;
+      double* flux;
+      double* out;
+      bool skip;
+    };
+    std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh_.dx(d);
+      const double A = V / dx;
+      const std::int64_t sd = strides[d];
+      const core::Box fb = owned_.faces(d);
+      for (int r = 0; r < nm; ++r) {
+        MaterialState& m = st_.mat[r];
+        ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
+                  m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
       }
-      a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
-      a[kVolume][c] = mass * v[c];
-      a[kEint][c] = mass * e[c];
-    }
-  }
-
-  // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
-  // the owned cells on both sides.
-  for (int d = 0; d < dim; ++d) {
-    const double dx = mesh_.dx(d);
-    const std::int64_t sd = strides[d];
-    const core::Box fb = owned_.faces(d);
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      const double* Fm = adv_.mat[r].massFlux[d].data();
-      const double* sc = outScale.data(r);
-      const double* uf = m.velFace[d].data();
-      const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
-                   *vL = m.spvolL.data();
-      double* a[kNumAcc];
-      accumulators(m, a);
       forEach(fb, [&](int i, int j, int k) {
         const std::int64_t fi = fb.index(i, j, k);
-        const double F = Fm[fi];
-        if (F == 0) return;
         const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-        const bool ownL = owned_.contains(i - (d == 0), j - (d == 1), k - (d == 2));
-        const bool ownR = owned_.contains(i, j, k);
-        const double lam = F > 0 ? sc[cL] : sc[cR];
-        const double ufi = uf[fi];
-        const std::int64_t D = ufi > 0 ? cL : cR;
-        const double sgn = ufi > 0 ? 1.0 : -1.0;
-        const double w = 0.5 * sgn * (1.0 - std::abs(ufi) * dt / dx);
-        auto face = [&](const double* f) {
-          const double q0 = f[D];
-          if (!second) return q0;
-          return q0 + w * limitedSlope(lim, q0 - f[D - sd], f[D + sd] - q0);
-        };
-        double fl[kNumAcc];
-        double ke = 0;
-        for (int q = 0; q < 3; ++q) {
-          const double uq = q < dim ? face(u[q]) : u[q][D];
-          fl[kMomX + q] = F * uq;
-          ke += uq * uq;
+        double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
+        double s1 = 0, s2 = 0;
+        for (int r = 0; r < nm; ++r) {
+          const Ptr& P = ptr[r];
+          th1[r] = th2[r] = 0;
+          if (P.skip) continue;
+          const double uf = P.uf[fi];
+          if (uf == 0) continue;
+          const FaceValue face(rc, uf, cL, sd, dt, dx);
+          const double sgn = uf > 0 ? 1.0 : -1.0;
+          th1[r] = P.th[face.D];
+          th2[r] = face(P.th);
+          s1 += th1[r];
+          s2 += th2[r];
+          fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
         }
-        const double ef = face(eL);
-        fl[kMass] = F;
-        fl[kEnergy] = F * (ef + 0.5 * ke);
-        fl[kVolume] = F * face(vL);
-        fl[kEint] = F * ef;
-        for (int q = 0; q < kNumAcc; ++q) {
-          const double v = lam * fl[q];
-          if (ownL) a[q][cL] -= v;
-          if (ownR) a[q][cR] += v;
+        const double scale = s2 > 0 ? s1 / s2 : 0.0;
+        const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
+        const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+        for (int r = 0; r < nm; ++r) {
+          const Ptr& P = ptr[r];
+          if (th1[r] == 0 && th2[r] == 0) {
+            if (!P.skip) P.flux[fi] = 0;
+            continue;
+          }
+          const double F = fm[r] * th2[r] * scale;
+          P.flux[fi] = F;
+          // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
+          if (F > 0 && ownL) P.out[cL] += F;
+          if (F < 0 && ownR) P.out[cR] -= F;
         }
       });
     }
+
+    // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
+    // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
+    for (int r = 0; r < nm; ++r) {
+      const double* ms = st_.mat[r].mass.data();
+      double* sc = outScale.data(r);
+      const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
+      for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
+    }
+    ghosts_->fill(outScale);
+
+    // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
+    // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
+    // (internal energy), m v (specific volume); m e in the scratch. advected::k* order.
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      double* a[kNumAcc];
+      accumulators(m, a);
+      const double *e = m.eintL.data(), *v = m.spvolL.data();
+      const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+      for (const std::int64_t c : ownedCells_) {
+        const double mass = a[kMass][c];
+        double ke = 0;
+        for (int d = 0; d < 3; ++d) {
+          a[kMomX + d][c] = mass * u[d][c];
+          ke += u[d][c] * u[d][c];
+        }
+        a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
+        a[kVolume][c] = mass * v[c];
+        a[kEint][c] = mass * e[c];
+      }
+    }
+
+    // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
+    // the owned cells on both sides.
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh_.dx(d);
+      const std::int64_t sd = strides[d];
+      const core::Box fb = owned_.faces(d);
+      for (int r = 0; r < nm; ++r) {
+        MaterialState& m = st_.mat[r];
+        if (m.external) continue;
+        const double* Fm = adv_.mat[r].massFlux[d].data();
+        const double* sc = outScale.data(r);
+        const double* uf = m.velFace[d].data();
+        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
+                     *vL = m.spvolL.data();
+        double* a[kNumAcc];
+        accumulators(m, a);
+        forEach(fb, [&](int i, int j, int k) {
+          const std::int64_t fi = fb.index(i, j, k);
+          const double F = Fm[fi];
+          if (F == 0) return;
+          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+          const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
+          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+          const double lam = F > 0 ? sc[cL] : sc[cR];
+          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
+          double fl[kNumAcc];
+          double ke = 0;
+          for (int q = 0; q < 3; ++q) {
+            const double uq = q < dim ? face(u[q]) : u[q][face.D];
+            fl[kMomX + q] = F * uq;
+            ke += uq * uq;
+          }
+          const double ef = face(eL);
+          fl[kMass] = F;
+          fl[kEnergy] = F * (ef + 0.5 * ke);
+          fl[kVolume] = F * face(vL);
+          fl[kEint] = F * ef;
+          for (int q = 0; q < kNumAcc; ++q) {
+            const double v = lam * fl[q];
+            if (ownL) a[q][cL] -= v;
+            if (ownR) a[q][cR] += v;
+          }
+        });
+      }
+    }
+  };
+  switch (secondOrder_ ? static_cast<Limiter>(limiter_) : Limiter::Minmod) {
+    case Limiter::Minmod:
+      if (secondOrder_) passes(Recon<true, Limiter::Minmod>{});
+      else passes(Recon<false, Limiter::Minmod>{});
+      break;
+    case Limiter::VanLeer: passes(Recon<true, Limiter::VanLeer>{}); break;
+    case Limiter::Superbee: passes(Recon<true, Limiter::Superbee>{}); break;
   }
 
   // The cells' fluid mass after advection (the mass fields hold it now), for the negligible-trace

@@ -16,9 +16,12 @@ namespace mpmice::ice {
 
 inline constexpr int kMaxMaterials = 16;
 
-/// s[n], w[n*n] (row-major, symmetric, diagonal ignored), x[c*n + r] in: b / s (the Lagrangian
-/// value), out: the exchanged value. Modifies w and s (scratch).
-inline void pointwiseExchange(int n, double* s, double* w, double* x, int nrhs) {
+/// The solve with n = N and nrhs = NRHS fixed at compile time where they are positive (the loops
+/// then unroll; the same operations in the same order as with run-time counts).
+template <int N, int NRHS>
+inline void pointwiseExchangeFixed(int n, double* s, double* w, double* x, int nrhs) {
+  if constexpr (N > 0) n = N;
+  if constexpr (NRHS > 0) nrhs = NRHS;
   double b[3 * kMaxMaterials];
   double piv[kMaxMaterials];
   for (int c = 0; c < nrhs; ++c)
@@ -49,11 +52,31 @@ inline void pointwiseExchange(int n, double* s, double* w, double* x, int nrhs) 
   }
 }
 
+/// s[n], w[n*n] (row-major, symmetric, diagonal ignored), x[c*n + r] in: b / s (the Lagrangian
+/// value), out: the exchanged value. Modifies w and s (scratch). Two and three materials with one
+/// to three right-hand sides run the unrolled solve.
+inline void pointwiseExchange(int n, double* s, double* w, double* x, int nrhs) {
+  if (n == 2 && nrhs == 1) return pointwiseExchangeFixed<2, 1>(n, s, w, x, nrhs);
+  if (n == 2 && nrhs == 2) return pointwiseExchangeFixed<2, 2>(n, s, w, x, nrhs);
+  if (n == 2 && nrhs == 3) return pointwiseExchangeFixed<2, 3>(n, s, w, x, nrhs);
+  if (n == 3 && nrhs == 1) return pointwiseExchangeFixed<3, 1>(n, s, w, x, nrhs);
+  if (n == 3 && nrhs == 2) return pointwiseExchangeFixed<3, 2>(n, s, w, x, nrhs);
+  if (n == 3 && nrhs == 3) return pointwiseExchangeFixed<3, 3>(n, s, w, x, nrhs);
+  pointwiseExchangeFixed<0, 0>(n, s, w, x, nrhs);
+}
+
 /// The couplings w_rq = scale K_rq theta_r theta_q of the exchange between n materials (K and w
 /// n x n, row-major): scale = dt V in a cell (phase 10), dt at a face (phases 3 and 5).
-inline void exchangeCouplings(int n, double scale, const double* K, const double* theta, double* w) {
+template <int N>
+inline void exchangeCouplingsFixed(int n, double scale, const double* K, const double* theta, double* w) {
+  if constexpr (N > 0) n = N;
   for (int r = 0; r < n; ++r)
     for (int q = 0; q < n; ++q) w[r * n + q] = scale * K[r * n + q] * theta[r] * theta[q];
+}
+inline void exchangeCouplings(int n, double scale, const double* K, const double* theta, double* w) {
+  if (n == 2) return exchangeCouplingsFixed<2>(n, scale, K, theta, w);
+  if (n == 3) return exchangeCouplingsFixed<3>(n, scale, K, theta, w);
+  exchangeCouplingsFixed<0>(n, scale, K, theta, w);
 }
 
 }  // namespace mpmice::ice

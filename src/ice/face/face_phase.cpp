@@ -38,40 +38,6 @@ double shockViscosity(const IceState& st, const int* l, int i, int j, int k, int
   const double rho = 2.0 * dL * dR / (dL + dR);
   return rho * (q1 * c * -du + q2 * du * du);
 }
-// Mixture density rho, acoustic impedance z = rho c (Wood) and mass-averaged velocity u_d of
-// every cell of `box` (the owned cells and one layer around them), computed once per cell rather
-// than once per face the cell borders (two faces per direction).
-struct CellMixes {
-  core::Box box;
-  std::vector<double> rho, z;
-  std::array<std::vector<double>, 3> u;
-};
-CellMixes cellMixes(const IceState& st, const core::Box& box, int dim) {
-  CellMixes x;
-  x.box = box;
-  const auto n = static_cast<std::size_t>(box.numPts());
-  x.rho.resize(n);
-  x.z.resize(n);
-  for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
-  const core::Box& sb = st.press.box();
-  forEach(box, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k);
-    const auto o = static_cast<std::size_t>(box.index(i, j, k));
-    double mass = 0, mu[3] = {0, 0, 0}, dn = 0, kap = 0;
-    for (const MaterialState& m : st.mat) {
-      const double mm = m.mass.data()[c];
-      mass += mm;
-      for (int d = 0; d < dim; ++d) mu[d] += mm * m.vel.data(d)[c];
-      const double t = m.theta.data()[c];
-      if (t > 0) dn += t / m.spvol.data()[c], kap += t * m.kappa.data()[c];
-    }
-    x.rho[o] = dn;
-    x.z[o] = dn > 0 && kap > 0 ? std::sqrt(dn / kap) : 0.0;
-    for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)][o] = mass > 0 ? mu[d] / mass : 0.0;
-  });
-  return x;
-}
-
 // The two-shock approximate Riemann solution's dissipative part (Dukowicz 1985) at a face in
 // compression (du = u_R - u_L < 0): p* = p_avg - W_L W_R / (W_L + W_R) du with the shock
 // impedances W = rho (c + Gamma |du|), Gamma = (gamma + 1) / 2 of an ideal gas of gamma 1.4
@@ -96,6 +62,32 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
 }
 }  // namespace
 
+void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x) {
+  const core::Box box = owned.grow(1, dim);
+  x.box = box;
+  const auto n = static_cast<std::size_t>(box.numPts());
+  x.rho.resize(n);
+  x.z.resize(n);
+  for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
+  const core::Box& sb = st.press.box();
+  forEach(box, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
+    const auto o = static_cast<std::size_t>(box.index(i, j, k));
+    double mass = 0, mu[3] = {0, 0, 0}, dn = 0, kap = 0;
+    for (const MaterialState& m : st.mat) {
+      const double mm = m.mass.data()[c];
+      mass += mm;
+      for (int d = 0; d < dim; ++d) mu[d] += mm * m.vel.data(d)[c];
+      const double t = m.theta.data()[c];
+      if (t > 0) dn += t / m.spvol.data()[c], kap += t * m.kappa.data()[c];
+    }
+    x.rho[o] = dn;
+    x.z[o] = dn > 0 && kap > 0 ? std::sqrt(dn / kap) : 0.0;
+    for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)][o] = mass > 0 ? mu[d] / mass : 0.0;
+  });
+}
+
+
 void IceSolver::computeFaceVelocities() {
   const int dim = mesh_.dim();
   const int nm = numMaterials();
@@ -109,8 +101,8 @@ void IceSolver::computeFaceVelocities() {
   // "Shocks": ICE's dt v_r grad p alone vanishes with the local acoustic CFL number, and a slow
   // shock then rings: test 5 +8.4 % at 400 cells, +12.6 % at CFL 0.2).
   const bool riemannOn = riemannFacePressureOn();
-  CellMixes mix;
-  if (riemannOn) mix = cellMixes(st_, owned_.grow(1, dim), dim);
+  const CellMixes empty;
+  const CellMixes& mix = riemannOn ? cellMixes() : empty;
   const std::int64_t mixStrides[3] = {1, mix.box.length(0), std::int64_t(mix.box.length(0)) * mix.box.length(1)};
   for (int d = 0; d < dim; ++d) {
     const double dx = mesh_.dx(d);
@@ -169,10 +161,12 @@ double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double d
 }
 
 double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
-                              std::int64_t* cell) {
+                              std::int64_t* cell, const CellMixes* mixes) {
   const int dim = mesh.dim();
   const core::Box& sb = st.press.box();
-  const CellMixes x = cellMixes(st, owned.grow(1, dim), dim);
+  CellMixes own;
+  if (!mixes) computeCellMixes(st, owned, dim, own);
+  const CellMixes& x = mixes ? *mixes : own;
   const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   double rate = 0;
   forEach(owned, [&](int i, int j, int k) {
@@ -196,28 +190,40 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
   return rate;
 }
 
-void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann) {
+void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann,
+                          const CellMixes* mixes) {
   const bool q = q1 > 0 || q2 > 0;
-  CellMixes x;
-  if (riemann) x = cellMixes(st, owned.grow(1, dim), dim);
+  CellMixes own;
+  if (riemann && !mixes) computeCellMixes(st, owned, dim, own);
+  const CellMixes& x = mixes ? *mixes : own;
   const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
+  const core::Box& sb = st.press.box();
+  const std::int64_t cellStrides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  std::vector<const double*> mass;
+  for (const MaterialState& m : st.mat) mass.push_back(m.mass.data());
+  const double* press = st.press.data();
   for (int d = 0; d < dim; ++d) {
-    forEach(owned.faces(d), [&](int i, int j, int k) {
-      int l[3] = {i, j, k};
-      l[d] -= 1;
+    const core::Box fb = owned.faces(d);
+    double* pface = st.pressFace[d].data();
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t cR = sb.index(i, j, k), cL = cR - cellStrides[d];
       double rL = 0, rR = 0;
-      for (const MaterialState& m : st.mat) {
-        rL += m.mass(l[0], l[1], l[2]);
-        rR += m.mass(i, j, k);
+      for (const double* ms : mass) {
+        rL += ms[cL];
+        rR += ms[cR];
       }
-      const double pL = st.press(l[0], l[1], l[2]), pR = st.press(i, j, k);
+      const double pL = press[cL], pR = press[cR];
       double pf = (rL + rR) > 0 ? (pL * rR + pR * rL) / (rL + rR) : 0.5 * (pL + pR);
-      if (q && rL > 0 && rR > 0) pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
+      if (q && rL > 0 && rR > 0) {
+        int l[3] = {i, j, k};
+        l[d] -= 1;
+        pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
+      }
       if (riemann && rL > 0 && rR > 0) {
         const std::int64_t R = x.box.index(i, j, k);
         pf += riemannDissipation(x, R - strides[d], R, d);
       }
-      st.pressFace[d](i, j, k) = pf;
+      pface[fb.index(i, j, k)] = pf;
     });
   }
 }
@@ -226,8 +232,15 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
 // return as heat: coupled runs keep the average (docs/ice.md "Face pressure").
 // The impedances need kappa in the ghost cells: the equilibrium fills them with the other fields'
 // (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
+const CellMixes& IceSolver::cellMixes() const {
+  if (!mixesValid_) computeCellMixes(st_, owned_, mesh_.dim(), mixes_);
+  mixesValid_ = true;
+  return mixes_;
+}
+
 void IceSolver::computeFacePressure() {
-  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn());
+  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn(),
+                       riemannFacePressureOn() ? &cellMixes() : nullptr);
 }
 
 }  // namespace mpmice::ice

@@ -18,10 +18,27 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
                                                            const std::vector<const double*>& e, double* p,
                                                            const std::vector<double*>& rhoMicro, double* iters,
                                                            const std::vector<const double*>* carriedVolume) {
-  const std::size_t nm = eos_.size();
   held_.clear();
-  const double inf = std::numeric_limits<double>::infinity();
   std::vector<EquilibriumFailure> failures;
+  if (cells.size() <= kBlock) {
+    solveBlock(cells, rho, e, p, rhoMicro, iters, carriedVolume, failures);
+    return failures;
+  }
+  for (std::size_t b = 0; b < cells.size(); b += kBlock) {
+    const auto first = cells.begin() + static_cast<std::ptrdiff_t>(b);
+    block_.assign(first, first + static_cast<std::ptrdiff_t>(std::min(kBlock, cells.size() - b)));
+    solveBlock(block_, rho, e, p, rhoMicro, iters, carriedVolume, failures);
+  }
+  return failures;
+}
+
+void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
+                                     const std::vector<const double*>& e, double* p,
+                                     const std::vector<double*>& rhoMicro, double* iters,
+                                     const std::vector<const double*>* carriedVolume,
+                                     std::vector<EquilibriumFailure>& failures) {
+  const std::size_t nm = eos_.size();
+  const double inf = std::numeric_limits<double>::infinity();
   // Records cell c (active slot a) as failed after `iterations`.
   auto fail = [&](EquilibriumFailure::Kind kind, std::size_t a, std::int64_t c, double pc, double lo, double hi,
                   double residual, int iterations) {
@@ -38,7 +55,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       rhoMicro[0][c] = r;
       iters[c] = 0;
     }
-    return failures;
+    return;
   }
   active_.clear();
   for (const std::int64_t c : cells) {
@@ -73,8 +90,11 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
   // (below p_own) does not bound the cell's interval.
   const bool traces = traceY_ > 0 && carriedVolume != nullptr && na > 0;
   if (traces) {
+    // Indexed by cell - c0_ (the block's cells span c0_ .. c0_ + n - 1).
     std::int64_t n = 0;
-    for (const std::int64_t c : active_) n = std::max(n, c + 1);
+    c0_ = active_.front();
+    for (const std::int64_t c : active_) c0_ = std::min(c0_, c);
+    for (const std::int64_t c : active_) n = std::max(n, c - c0_ + 1);
     pHold_.resize(nm);
     rhoHold_.resize(nm);
     for (std::size_t r = 0; r < nm; ++r) {
@@ -87,7 +107,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     for (std::size_t r = 0; r < nm; ++r) {
       double* ph = pHold_[r].data();
       double* rh = rhoHold_[r].data();
-      for (const std::int64_t c : active_) ph[c] = -inf;
+      for (const std::int64_t c : active_) ph[c - c0_] = -inf;
       if (!fluid_[r]) continue;
       const double* vc = (*carriedVolume)[r];
       for (const std::int64_t c : active_) {
@@ -101,7 +121,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
         double po, pf;
         eos_[r]->pressure(1, &rc, &e[r][c], &po);
         eos_[r]->pressureFloor(1, &e[r][c], &pf);
-        if (std::isfinite(po) && po > pf) ph[c] = po, rh[c] = rc;  // an admissible carried state
+        if (std::isfinite(po) && po > pf) ph[c - c0_] = po, rh[c - c0_] = rc;  // an admissible carried state
       }
     }
   }
@@ -112,7 +132,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     eos_[r]->pressureFloor(na, ea_.data(), pf_.data());
     const double* ph = traces ? pHold_[r].data() : nullptr;
     for (std::size_t a = 0; a < na; ++a) {
-      if (ph && ph[active_[a]] > -inf) continue;  // a held trace is admissible at every pressure
+      if (ph && ph[active_[a] - c0_] > -inf) continue;  // a held trace is admissible at every pressure
       if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
     }
   }
@@ -156,7 +176,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
         const double* ph = pHold_[r].data();
         const double* rh = rhoHold_[r].data();
         for (std::size_t a = 0; a < na; ++a)
-          if (pa_[a] < ph[active_[a]]) ra_[a] = rh[active_[a]], da_[a] = 0.0;
+          if (pa_[a] < ph[active_[a] - c0_]) ra_[a] = rh[active_[a] - c0_], da_[a] = 0.0;
       }
       const double* rr = rho[r];
       double* rm = rhoMicro[r];
@@ -231,8 +251,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
   if (traces)
     for (const std::int64_t c : all_)
       for (std::size_t r = 0; r < nm; ++r)
-        if (p[c] < pHold_[r][c]) held_.emplace_back(static_cast<int>(r), c);
-  return failures;
+        if (p[c] < pHold_[r][static_cast<std::size_t>(c - c0_)]) held_.emplace_back(static_cast<int>(r), c);
 }
 
 }  // namespace mpmice::ice

@@ -57,7 +57,9 @@ class EquilibriumPressure {
   /// cells: linear indices into the arrays; rho[r], e[r]: per material; p: in guess, out result;
   /// rhoMicro[r]: out; iters: out (as double, it is written to a field). carriedVolume[r] (may
   /// alias rhoMicro[r]: it is read first): each material's specific volume carried into the step,
-  /// needed by the trace rule (nullptr: no trace rule). Returns the failures.
+  /// needed by the trace rule (nullptr: no trace rule). Returns the failures. The cells are
+  /// solved in blocks of kBlock (scratch of the block's size, not the mesh's; each cell's
+  /// iteration is its own, so the result does not depend on the blocks).
   std::vector<EquilibriumFailure> solve(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                                         const std::vector<const double*>& e, double* p,
                                         const std::vector<double*>& rhoMicro, double* iters,
@@ -70,12 +72,19 @@ class EquilibriumPressure {
   [[nodiscard]] const std::vector<std::pair<int, std::int64_t>>& heldTraces() const { return held_; }
 
  private:
+  static constexpr std::size_t kBlock = 1024;
+  void solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
+                  const std::vector<const double*>& e, double* p, const std::vector<double*>& rhoMicro,
+                  double* iters, const std::vector<const double*>* carriedVolume,
+                  std::vector<EquilibriumFailure>& failures);
   std::vector<const Eos*> eos_;
   double tol_;
   int maxIt_;
   std::vector<bool> fluid_;
   double traceY_;
-  // Trace rule per material, indexed by cell: p_own (-inf: not held) and the carried density.
+  // Trace rule per material, indexed by cell - c0_: p_own (-inf: not held) and the carried density.
+  std::int64_t c0_ = 0;
+  std::vector<std::int64_t> block_;
   std::vector<std::vector<double>> pHold_, rhoHold_;
   std::vector<std::int64_t> all_;
   std::vector<std::pair<int, std::int64_t>> held_;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 #include <stdexcept>
+#include <vector>
 
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
@@ -15,6 +16,7 @@ namespace mpmice::ice {
 using core::forEach;
 
 void IceSolver::computeEquilibriumPressure() {
+  mixesValid_ = false;  // theta, specific volume and kappa change here
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
   // External (solid) materials enter with the volume their particles occupy, m_e v_e (v_e as
@@ -167,38 +169,59 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
   const int dim = mesh.dim();
   const core::Box& sb = st.press.box();
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  const std::size_t nm = st.mat.size();
+  std::vector<const double*> uf(nm), th(nm);
   // Face volume fluxes U_f = sum_r theta_r,f u_f,r, theta from the upwind cell.
   for (int d = 0; d < dim; ++d) {
     const core::Box fb = owned.faces(d);
     const std::int64_t sd = strides[d];
     double* U = st.volFlux[d].data();
+    for (std::size_t r = 0; r < nm; ++r) uf[r] = st.mat[r].velFace[d].data(), th[r] = st.mat[r].theta.data();
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       double f = 0;
-      for (const MaterialState& m : st.mat) {
-        const double u = m.velFace[d].data()[fi];
-        f += u * m.theta.data()[u > 0 ? cL : cR];
+      for (std::size_t r = 0; r < nm; ++r) {
+        const double u = uf[r][fi];
+        f += u * th[r][u > 0 ? cL : cR];
       }
       U[fi] = f;
     });
   }
+  // Their divergence: the face above cell (i, j, k) in direction d is its face index plus the
+  // face box's stride in d.
+  const double* U[3] = {nullptr, nullptr, nullptr};
+  std::int64_t fs[3] = {0, 0, 0};
+  core::Box fbs[3];
+  for (int d = 0; d < dim; ++d) {
+    U[d] = st.volFlux[d].data();
+    fbs[d] = owned.faces(d);
+    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
+  }
+  double* divU = st.divU.data();
   forEach(owned, [&](int i, int j, int k) {
     double div = 0;
     for (int d = 0; d < dim; ++d) {
-      const core::Field& U = st.volFlux[d];
-      div += (U(i + (d == 0), j + (d == 1), k + (d == 2)) - U(i, j, k)) / mesh.dx(d);
+      const std::int64_t f = fbs[d].index(i, j, k);
+      div += (U[d][f + fs[d]] - U[d][f]) / mesh.dx(d);
     }
-    st.divU(i, j, k) = div;
+    divU[sb.index(i, j, k)] = div;
   });
 }
 
 void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) {
+  const core::Box& sb = st.press.box();
+  const std::size_t nm = st.mat.size();
+  std::vector<const double*> th(nm), ka(nm);
+  for (std::size_t r = 0; r < nm; ++r) th[r] = st.mat[r].theta.data(), ka[r] = st.mat[r].kappa.data();
+  const double *divU = st.divU.data(), *pe = st.pressEq.data();
+  double *dpp = st.dp.data(), *p = st.press.data();
   forEach(owned, [&](int i, int j, int k) {
+    const std::int64_t c = sb.index(i, j, k);
     double kbar = 0;
-    for (const MaterialState& m : st.mat) kbar += m.theta(i, j, k) * m.kappa(i, j, k);
-    const double dp = kbar > 0 ? -dt * st.divU(i, j, k) / kbar : 0.0;
-    st.dp(i, j, k) = dp;
-    st.press(i, j, k) = st.pressEq(i, j, k) + dp;
+    for (std::size_t r = 0; r < nm; ++r) kbar += th[r][c] * ka[r][c];
+    const double dp = kbar > 0 ? -dt * divU[c] / kbar : 0.0;
+    dpp[c] = dp;
+    p[c] = pe[c] + dp;
   });
 }
 

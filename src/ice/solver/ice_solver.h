@@ -30,6 +30,7 @@
 #include "ice/solver/energy_audit.h"
 #include "ice/solver/scratch.h"
 #include "ice/state/ice_state.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -118,7 +119,10 @@ class IceSolver {
   // ---- access
   [[nodiscard]] const core::Field& pressure() const { return st_.press; }
   [[nodiscard]] const IceState& state() const { return st_; }
-  [[nodiscard]] IceState& state() { return st_; }
+  [[nodiscard]] IceState& state() {
+    mixesValid_ = false;  // the caller may change what the cached cell mixtures come from
+    return st_;
+  }
   [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
   /// The momentum exchange coefficient K of materials a and b [kg/(m^3 s)] (ice.exchange.momentum,
   /// ice.exchange.pairs; 0 for a == b).
@@ -207,6 +211,14 @@ class IceSolver {
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
   SemiImplicitScratch semi_;
   AdvectionScratch adv_;
+  // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
+  // velocities and the face pressure of a step (none of the phases between them changes mass,
+  // velocity, theta, specific volume or kappa); invalid from the equilibrium, the sources, the
+  // advection, a restore and whenever the state is set from outside (cellMixes() computes them
+  // again).
+  mutable CellMixes mixes_;
+  mutable bool mixesValid_ = false;
+  [[nodiscard]] const CellMixes& cellMixes() const;
 };
 
 }  // namespace mpmice::ice

@@ -60,6 +60,7 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
 }
 
 void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
+  mixesValid_ = false;
   forEveryField(st_, [&](const std::string& name, core::Field& f) {
     data.copyTo(cat(cat(prefix, "."), name), std::span<double>(f.data(), sizeOf(f)));
   });

@@ -22,6 +22,7 @@ namespace mpmice::ice {
 using core::forEach;
 
 void IceSolver::computeSourcesAndLagrangian() {
+  mixesValid_ = false;  // the cached cell mixtures serve the stable step to the face pressure only
   const int dim = mesh_.dim();
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
@@ -44,6 +45,19 @@ void IceSolver::computeSourcesAndLagrangian() {
   }
   const double* press = st_.press.data();
   const double* divU = st_.divU.data();
+  // Per direction: the face pressures and volume fluxes, their face box, the stride to the face
+  // above a cell, dx.
+  const double *pF[3] = {nullptr, nullptr, nullptr}, *UF[3] = {nullptr, nullptr, nullptr};
+  core::Box fbs[3];
+  std::int64_t fs[3] = {0, 0, 0};
+  double dxs[3] = {1, 1, 1};
+  for (int d = 0; d < dim; ++d) {
+    pF[d] = st_.pressFace[d].data();
+    UF[d] = st_.volFlux[d].data();
+    fbs[d] = st_.pressFace[d].box();
+    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
+    dxs[d] = mesh_.dx(d);
+  }
   forEach(owned_, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
     double kbar = 0;
@@ -53,13 +67,12 @@ void IceSolver::computeSourcesAndLagrangian() {
     double gp[3] = {0, 0, 0};
     double dEflux = 0;
     for (int d = 0; d < dim; ++d) {
-      const core::Box& fb = st_.pressFace[d].box();
-      const std::int64_t fl = fb.index(i, j, k), fh = fb.index(i + (d == 0), j + (d == 1), k + (d == 2));
-      const double pfl = st_.pressFace[d].data()[fl], pfh = st_.pressFace[d].data()[fh];
-      gp[d] = (pfh - pfl) / mesh_.dx(d);
+      const std::int64_t fl = fbs[d].index(i, j, k), fh = fl + fs[d];
+      const double pfl = pF[d][fl], pfh = pF[d][fh];
+      gp[d] = (pfh - pfl) / dxs[d];
       {
-        const double* U = st_.volFlux[d].data();
-        dEflux -= dt * V * (pfh * U[fh] - pfl * U[fl]) / mesh_.dx(d);
+        const double* U = UF[d];
+        dEflux -= dt * V * (pfh * U[fh] - pfl * U[fl]) / dxs[d];
       }
     }
     double dKE = 0, dIE = 0, dWork = 0;

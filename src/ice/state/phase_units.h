@@ -5,10 +5,25 @@
 /// Face fields live on the faces normal to each direction d < dim of the owned box (face index i
 /// = low face of cell i); cell fields over the stored box, read at the owned cells and their face
 /// neighbours (their ghosts must be filled).
+#include <array>
+#include <vector>
+
 #include "core/mesh/mesh.h"
 #include "ice/state/ice_state.h"
 
 namespace mpmice::ice {
+
+/// Mixture density rho, acoustic impedance z = rho c (Wood) and mass-averaged velocity u_d of
+/// every cell of `box` (the owned cells and one layer around them): what the Riemann face
+/// pressure and its rate in the stable step read, computed once per cell (not per face side).
+struct CellMixes {
+  core::Box box;
+  std::vector<double> rho, z;
+  std::array<std::vector<double>, 3> u;
+};
+/// Fills x for the owned box grown by one layer (ghosts of mass, velocity, theta, specific
+/// volume and kappa filled); reuses x's storage.
+void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x);
 
 /// Face volume fluxes U_f = sum_r theta_r u_f,r (theta from the upwind cell; st.volFlux) and
 /// their divergence per owned cell (st.divU).
@@ -32,9 +47,10 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
 /// rho its mixture density (the term is a diffusion of velocity with nu = Z dx / rho at faces in
 /// compression; forward Euler is stable for dt <= 1 / rate). `cell` gets the stored-box index of
 /// the cell that sets it. Needs mass, velocity, theta, specific volume and kappa in the ghosts.
+/// `mixes`: computeCellMixes of the current state if the caller keeps it (else computed here).
 [[nodiscard]] double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
-                                            std::int64_t* cell);
+                                            std::int64_t* cell, const CellMixes* mixes = nullptr);
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0,
-                          bool riemann = false);
+                          bool riemann = false, const CellMixes* mixes = nullptr);
 
 }  // namespace mpmice::ice
