@@ -11,6 +11,7 @@
 // the solid's annulus, p_amb from the outflow boundary pressure (else the fluid region outside
 // the annulus) and p_ref from the solid; without it, the seed's legacy measure (r_i 0.5, r_o 1.0,
 // S = 2 P r_i^2 / (r_o^2 - r_i^2) with the absolute P: the figures of docs/coupling.md).
+// --profile prints the radial profile in bins of dx / 2 (signed Eq. 13 bias, sigma_r, sigma_theta).
 // With a plot prefix it writes <prefix>.csv (the particles nearest the x-axis: r, sigma_r,
 // sigma_theta and the Lame values) and <prefix>.png through gnuplot. It first prints the gas leak:
 // the fraction of the fluids' mass inside r_i at the first output step that is no longer inside
@@ -33,6 +34,7 @@ using mpmice::study::Annulus;
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   Annulus geo;
+  bool profile = false;  // --profile: the radial profile in bins of dx / 2
   try {
     for (std::size_t i = 0; i < args.size(); ++i)
       if (args[i] == "--scene" && i + 1 < args.size()) {
@@ -40,12 +42,18 @@ int main(int argc, char** argv) {
         args.erase(args.begin() + static_cast<long>(i), args.begin() + static_cast<long>(i) + 2);
         break;
       }
+    for (std::size_t i = 0; i < args.size(); ++i)
+      if (args[i] == "--profile") {
+        profile = true;
+        args.erase(args.begin() + static_cast<long>(i));
+        break;
+      }
   } catch (const std::exception& e) {
     std::cerr << "cylinder_lame: " << e.what() << "\n";
     return 2;
   }
   if (args.empty()) {
-    std::cerr << "usage: cylinder_lame <output-dir>/<scene> [plot-prefix] [--scene scene.yaml]\n";
+    std::cerr << "usage: cylinder_lame <output-dir>/<scene> [plot-prefix] [--scene scene.yaml] [--profile]\n";
     return 2;
   }
   const double kRi = geo.ri, kRo = geo.ro;
@@ -92,6 +100,41 @@ int main(int argc, char** argv) {
                   acc[3] / N, acc[4] / N, nIn ? sIn / double(nIn) : 0.0, nIn, nOut ? sOut / double(nOut) : 0.0, nOut);
       std::printf("cylinder_lame: signed mean per particle by band (0-1, 1-2, 2-4, 4-8, >=8 dx):");
       for (int k = 0; k < 5; ++k) std::printf(" %+.4f", cnt[k] > 0 ? sgn[k] / cnt[k] : 0.0);
+      std::printf("\n");
+    }
+    // 3c. --profile: by radius in bins of dx / 2 over all particles, the signed mean of
+    //     ((sigma_r + sigma_theta) - S) / S and the means of sigma_r and sigma_theta against Lame's
+    //     at the bin's mean radius (as `mpm_study lame_bands` prints MPM alone's with LAME_PROFILE=1).
+    if (profile) {
+      const double h = 0.5 * dx;
+      const int nb = static_cast<int>(std::ceil((kRo - kRi) / h)) + 2;
+      std::vector<double> c(nb, 0), e(nb, 0), ea(nb, 0), rr(nb, 0), srs(nb, 0), sts(nb, 0);
+      double ac[9] = {}, ae[9] = {}, aa[9] = {};  // interior (>= 2 dx from both surfaces) by angle, 10 degrees each
+      for (std::size_t q = 0; q < n; ++q) {
+        const double px = r.x[3 * q], py = r.x[3 * q + 1], rad = std::hypot(px, py), cs = px / rad, sn = py / rad;
+        const int b = std::clamp(static_cast<int>(std::floor((rad - kRi) / h)) + 1, 0, nb - 1);
+        const double sxx = r.stress[sc * q], syy = r.stress[sc * q + 1], sxy = r.stress[sc * q + 3];
+        c[b] += 1;
+        const double eq = (sxx + syy - r.sum) / r.sum;
+        e[b] += eq;
+        ea[b] += std::fabs(eq);
+        if (std::min(rad - kRi, kRo - rad) >= 2 * dx) {
+          const int k = std::clamp(static_cast<int>(std::atan2(py, px) / (M_PI / 18)), 0, 8);
+          ac[k] += 1, ae[k] += eq, aa[k] += std::fabs(eq);
+        }
+        rr[b] += rad;
+        srs[b] += sxx * cs * cs + syy * sn * sn + 2 * sxy * sn * cs;
+        sts[b] += sxx * sn * sn + syy * cs * cs - 2 * sxy * sn * cs;
+      }
+      std::printf("cylinder_lame: profile | r [m] | particles | signed (sum - S) / S | mean abs | sigma_r [MPa] | Lame | sigma_theta [MPa] | Lame |\n");
+      for (int b = 0; b < nb; ++b) {
+        if (c[b] == 0) continue;
+        const double rm = rr[b] / c[b];
+        std::printf("cylinder_lame: profile | %.5f | %.0f | %+.5f | %.5f | %.4f | %.4f | %.4f | %.4f |\n", rm, c[b], e[b] / c[b],
+                    ea[b] / c[b], srs[b] / c[b] / 1e6, (A - B / (rm * rm)) / 1e6, sts[b] / c[b] / 1e6, (A + B / (rm * rm)) / 1e6);
+      }
+      std::printf("cylinder_lame: interior (>= 2 dx from both surfaces) by angle, 10 degree bins: signed / mean abs:");
+      for (int k = 0; k < 9; ++k) std::printf(" %+.4f/%.4f", ac[k] > 0 ? ae[k] / ac[k] : 0.0, ac[k] > 0 ? aa[k] / ac[k] : 0.0);
       std::printf("\n");
     }
     // 4. Profile near the x-axis and plot.

@@ -9,8 +9,9 @@
 // 1. bar:   vibrating bar, 4 resolutions per shape function: v_cm error, energy drift, order.
 // 2. lame:  Lame cylinder, dx = 0.05 ... 0.00625: Eq. 13 error and order per shape function.
 //           Env: LAME_COARSE=1 (3 grids), LAME_DX, LAME_PPC (2), LAME_END (4e-3), LAME_DAMP (1e4),
-//           LAME_RAMP (1e-3), LAME_FLIP, LAME_UPDATE.
+//           LAME_RAMP (1e-3), LAME_FLIP, LAME_UPDATE; LAME_PROFILE=1 (lame_bands): the radial profile.
 // 3. disks: colliding disks, energy over the collision per update scheme (FLIP and PIC).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -145,6 +146,45 @@ int main(int argc, char** argv) {
           }
           comm.sumInPlace(acc);
           const double n = static_cast<double>(solver.globalParticleCount());
+          if (std::getenv("LAME_PROFILE")) {
+            // By radius in bins of dx / 2: signed (sum - S) / S, sigma_r and sigma_theta against Lame's
+            // (the format of `cylinder_lame --profile`).
+            const double h = 0.5 * dx, A = l.sumExact() / 2, B = l.P * l.ri * l.ri * l.ro * l.ro / (l.ro * l.ro - l.ri * l.ri);
+            const int nb = static_cast<int>(std::ceil((l.ro - l.ri) / h)) + 2;
+            std::vector<double> pr(6 * static_cast<std::size_t>(nb) + 27, 0.0);  // + interior by angle (10 degrees)
+            double* ang = pr.data() + 6 * nb;
+            for (std::size_t i = 0; i < p.size(); ++i) {
+              const double r = std::hypot(p.x[0][i], p.x[1][i]), cs = p.x[0][i] / r, sn = p.x[1][i] / r;
+              const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor((r - l.ri) / h)) + 1, 0, nb - 1));
+              const double sxx = p.stress[kXX][i], syy = p.stress[kYY][i], sxy = p.stress[kXY][i];
+              const double eq = (sxx + syy - l.sumExact()) / l.sumExact();
+              pr[6 * b] += 1;
+              pr[6 * b + 1] += eq;
+              pr[6 * b + 2] += r;
+              pr[6 * b + 3] += sxx * cs * cs + syy * sn * sn + 2 * sxy * sn * cs;
+              pr[6 * b + 4] += sxx * sn * sn + syy * cs * cs - 2 * sxy * sn * cs;
+              pr[6 * b + 5] += std::fabs(eq);
+              if (std::min(r - l.ri, l.ro - r) >= 2 * dx) {
+                const int k = std::clamp(static_cast<int>(std::atan2(p.x[1][i], p.x[0][i]) / (M_PI / 18)), 0, 8);
+                ang[3 * k] += 1, ang[3 * k + 1] += eq, ang[3 * k + 2] += std::fabs(eq);
+              }
+            }
+            comm.sumInPlace(pr);
+            for (std::size_t b = 0; root && b < static_cast<std::size_t>(nb); ++b) {
+              const double c = pr[6 * b];
+              if (c == 0) continue;
+              const double rm = pr[6 * b + 2] / c;
+              std::printf("mpm_study: profile | %.5f | %.0f | %+.5f | %.5f | %.4f | %.4f | %.4f | %.4f |\n", rm, c, pr[6 * b + 1] / c,
+                          pr[6 * b + 5] / c, pr[6 * b + 3] / c / 1e6, (A - B / (rm * rm)) / 1e6, pr[6 * b + 4] / c / 1e6,
+                          (A + B / (rm * rm)) / 1e6);
+            }
+            if (root) {
+              std::printf("mpm_study: interior (>= 2 dx from both surfaces) by angle, 10 degree bins: signed / mean abs:");
+              for (int k = 0; k < 9; ++k)
+                std::printf(" %+.4f/%.4f", ang[3 * k] > 0 ? ang[3 * k + 1] / ang[3 * k] : 0.0, ang[3 * k] > 0 ? ang[3 * k + 2] / ang[3 * k] : 0.0);
+              std::printf("\n");
+            }
+          }
           if (root)
             std::printf("| %s | %g | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %+.4f |\n", sh.c_str(), dx,
                         (acc[0] + acc[1] + acc[2] + acc[3] + acc[4]) / n, acc[0] / n, acc[1] / n, acc[2] / n, acc[3] / n,

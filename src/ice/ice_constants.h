@@ -27,6 +27,9 @@ inline constexpr double kShockImpedanceSlope = 1.2;
 /// start. No test pins it (only the mpmice integration tests have solid regions, and they
 /// compare runs that share the value).
 inline constexpr double kTraceFraction = 1e-10;
+/// Sub-cells per direction with which a cell the edge of an energy source's shape cuts measures
+/// the fraction of its volume inside (midpoint rule; 8 in 2D resolves the fraction to 1/64).
+inline constexpr int kSourceSamples = 8;
 /// The largest share of a cell the solids' supplied volume may take in the equilibrium pressure
 /// (fill cap; fitFluidsToExternalVolume leaves the fluids 1 - kMaxSolidFraction of the cell).
 /// Pinned by IceExternal.OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolume (the

@@ -201,6 +201,7 @@ class IceSolver {
     int material;
     double power, start, end;
     std::vector<std::int64_t> cells;
+    std::vector<double> share;  // per cell: the fraction of its volume inside the source's shape
   };
   std::vector<Source> sources_;
   core::StepCollapse collapse_{0.0};  // time.dt_collapse_fraction (step())

@@ -174,13 +174,45 @@ void IceSolver::initialize(const core::Scene& scene) {
 
   // ---- energy sources
   for (const core::SourceSpec& s : scene.sources) {
-    Source src{scene.materialIndex(s.material), s.power_density, s.start, s.end, {}};
+    Source src{scene.materialIndex(s.material), s.power_density, s.start, s.end, {}, {}};
     if (src.material < 0 || st_.mat[src.material].external)
       badInput(s.where, "sources: '" + s.material + "' is not a fluid of the scene");
+    // Each cell takes the fraction of its volume inside the shape (midpoint rule on
+    // kSourceSamples^dim sub-cells where the corners and the centre disagree), not all or nothing
+    // by its centre: a cell the shape's edge cuts heats in proportion to its part inside, so the
+    // heated region's edge follows the shape instead of a staircase of cell centres (the seed
+    // cylinder's inner load sat on that staircase, docs/coupling.md).
     forEach(owned_, [&](int i, int j, int k) {
-      const core::RealVect x{mesh_.cellCenter(0, i), dim > 1 ? mesh_.cellCenter(1, j) : 0.0,
-                             dim > 2 ? mesh_.cellCenter(2, k) : 0.0};
-      if (s.shape.contains(x, dim)) src.cells.push_back(stored.index(i, j, k));
+      const int c[3] = {i, j, k};
+      auto at = [&](const double (&u)[3]) {
+        core::RealVect x{0.0, 0.0, 0.0};
+        for (int d = 0; d < dim; ++d) x[d] = mesh_.origin()[d] + (c[d] + u[d]) * mesh_.dx(d);
+        return s.shape.contains(x, dim);
+      };
+      const double mid[3] = {0.5, 0.5, 0.5};
+      const bool centre = at(mid);
+      bool mixed = false;
+      for (int q = 0; q < (1 << dim) && !mixed; ++q) {
+        const double u[3] = {double(q & 1), double((q >> 1) & 1), double((q >> 2) & 1)};
+        mixed = at(u) != centre;
+      }
+      double share = centre ? 1.0 : 0.0;
+      if (mixed) {
+        constexpr int n = kSourceSamples;
+        const int nz = dim > 2 ? n : 1, ny = dim > 1 ? n : 1;
+        int in = 0;
+        for (int a = 0; a < n; ++a)
+          for (int b = 0; b < ny; ++b)
+            for (int e = 0; e < nz; ++e) {
+              const double u[3] = {(a + 0.5) / n, (b + 0.5) / n, (e + 0.5) / n};
+              in += at(u) ? 1 : 0;
+            }
+        share = double(in) / double(n * ny * nz);
+      }
+      if (share > 0) {
+        src.cells.push_back(stored.index(i, j, k));
+        src.share.push_back(share);
+      }
     });
     sources_.push_back(std::move(src));
   }

@@ -184,9 +184,13 @@ void IceSolver::computeSourcesAndLagrangian() {
     const double* theta = m.theta.data();
     double* e = m.eintL.data();
     // power_density is per unit volume of the material: a cell the material shares (with a
-    // solid's surface, say) receives power * theta * V, so it heats at the rate of a full one.
-    for (const std::int64_t c : s.cells)
-      if (mass[c] > 0) e[c] += s.power * theta[c] * V * (b - a) / mass[c];
+    // solid's surface, say) receives power * theta * V (times its share inside the shape), so a
+    // cell wholly inside heats at the rate of a full one.
+    // A cell the shape's edge cuts takes its share of the volume inside (Source::share).
+    for (std::size_t q = 0; q < s.cells.size(); ++q) {
+      const std::int64_t c = s.cells[q];
+      if (mass[c] > 0) e[c] += s.power * s.share[q] * theta[c] * V * (b - a) / mass[c];
+    }
   }
 }
 
