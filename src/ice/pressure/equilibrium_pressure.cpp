@@ -11,6 +11,7 @@ EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tol
     : eos_(std::move(eos)), tol_(tolerance), maxIt_(maxIterations), fluid_(std::move(fluid)),
       traceY_(traceMassFraction) {
   fluid_.resize(eos_.size(), false);
+  for (const Eos* law : eos_) pCav_.push_back(law->cavitationPressure());
 }
 
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std::int64_t>& cells,
@@ -20,6 +21,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
                                                            const std::vector<const double*>* carriedVolume) {
   const std::size_t nm = eos_.size();
   held_.clear();
+  cavitated_.clear();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<EquilibriumFailure> failures;
   // Records cell c (active slot a) as failed after `iterations`.
@@ -34,6 +36,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       const double r = rho[0][c];
       double pc;
       eos_[0]->pressure(1, &r, &e[0][c], &pc);
+      if (pc < pCav_[0]) pc = pCav_[0], cavitated_.emplace_back(0, c);  // below the cut-off: a cavity
       p[c] = pc;
       rhoMicro[0][c] = r;
       iters[c] = 0;
@@ -50,6 +53,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     } else if (present == 1) {  // one material fills the cell: p from its EOS, no iteration
       const auto o = static_cast<std::size_t>(only);
       eos_[o]->pressure(1, &rho[o][c], &e[o][c], &p[c]);
+      if (p[c] < pCav_[o]) p[c] = pCav_[o], cavitated_.emplace_back(only, c);  // below the cut-off: a cavity
       iters[c] = 0;
       for (std::size_t r = 0; r < nm; ++r) {
         double dd;
@@ -116,11 +120,69 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
     }
   }
+  // Cavitating liquids (not traces that may be held): their cut-off is their floor. Where one sets
+  // the cell's floor F (strictly above the others'), f(F) with the liquids at the cut-off decides:
+  // f(F) >= 0 is a cavity at F (solved here), f(F) < 0 puts the root above F (iterated below).
+  cavFloor_.assign(na, 0);
+  bool anyCav = false;
+  for (std::size_t r = 0; r < nm; ++r) anyCav = anyCav || pCav_[r] > -inf;
+  if (anyCav) {
+    const double* none = nullptr;
+    for (std::size_t a = 0; a < na; ++a) {
+      const std::int64_t c = active_[a];
+      if (!(floor_[a] < inf)) continue;  // fails below
+      double F = floor_[a];
+      int cm = -1;
+      for (std::size_t r = 0; r < nm; ++r) {
+        const double* ph = traces ? pHold_[r].data() : none;
+        if (!(rho[r][c] > 0) || (ph && ph[c] > -inf) || !(pCav_[r] > F)) continue;
+        F = pCav_[r];
+        cm = static_cast<int>(r);
+      }
+      if (cm < 0) continue;
+      // f(F): the cavitating liquids (cut-off == F) at their density there, the others at theirs.
+      double vOther = 0, vCav = 0;
+      bool ok = true;
+      for (std::size_t r = 0; r < nm && ok; ++r) {
+        const double m = rho[r][c];
+        double rr, dd;
+        const double* ph = traces ? pHold_[r].data() : none;
+        if (m > 0 && ph && F < ph[c]) rr = rhoHold_[r][c];
+        else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
+        rhoMicro[r][c] = rr;  // absent materials: their density at F, as the iteration gives them
+        if (!(m > 0)) continue;
+        if (!(rr > 0) || !std::isfinite(rr)) ok = false;
+        else if (pCav_[r] == F && !(ph && ph[c] > -inf)) vCav += m / rr;
+        else vOther += m / rr;
+      }
+      floor_[a] = F;
+      floorMat_[a] = cm;
+      if (!ok) continue;  // a material without a state at F: the iteration names it
+      if (1.0 - vOther - vCav >= 0) {  // a cavity at F: the liquids share the volume left
+        const double free = 1.0 - vOther;
+        for (std::size_t r = 0; r < nm; ++r) {
+          const double m = rho[r][c];
+          const double* ph = traces ? pHold_[r].data() : none;
+          if (!(m > 0) || pCav_[r] != F || (ph && ph[c] > -inf)) continue;
+          const double share = free * (m / rhoMicro[r][c]) / vCav;  // its volume fraction
+          rhoMicro[r][c] = m / share;
+          cavitated_.emplace_back(static_cast<int>(r), c);
+        }
+        p[c] = F;
+        iters[c] = 0;
+        floor_[a] = inf;  // done: taken out of the iteration below
+        floorMat_[a] = -2;
+      } else {
+        cavFloor_[a] = 1;
+      }
+    }
+  }
   {
     std::size_t keep = 0;
     for (std::size_t a = 0; a < na; ++a) {
       const std::int64_t c = active_[a];
       const double F = floor_[a];
+      if (floorMat_[a] == -2) continue;  // cavitated above
       if (!(F < inf)) {  // some material has no admissible state at its energy
         fail(EquilibriumFailure::Kind::NoAdmissibleState, a, c, p[c], F, inf, inf, 0);
         continue;
@@ -130,10 +192,12 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       active_[keep] = c;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
+      cavFloor_[keep] = cavFloor_[a];
       ++keep;
     }
     na = keep;
     active_.resize(na);
+    cavFloor_.resize(na);
   }
   lo_.assign(floor_.begin(), floor_.begin() + static_cast<std::ptrdiff_t>(na));
   hi_.assign(na, inf);
@@ -200,7 +264,8 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
         }
       }
       const bool collapsed = std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 4e-16 * std::max(std::abs(hi), std::abs(lo));
-      const bool atFloor = std::isfinite(F) && lo == F;  // no iterate below the root seen yet
+      // No iterate below the root seen yet (a cavitating floor F has f(F) < 0: the root is above it).
+      const bool atFloor = std::isfinite(F) && lo == F && !cavFloor_[a];
       if (collapsed && atFloor) {  // f > 0 down to the floor: no admissible root
         fail(EquilibriumFailure::Kind::NoRootAboveFloor, a, c, pc, lo, hi, f, it + 1);
         continue;
@@ -219,6 +284,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       hi_[keep] = hi;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
+      cavFloor_[keep] = cavFloor_[a];
       ++keep;
     }
     na = keep;
@@ -227,6 +293,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     hi_.resize(na);
     floor_.resize(na);
     floorMat_.resize(na);
+    cavFloor_.resize(na);
   }
   if (traces)
     for (const std::int64_t c : all_)

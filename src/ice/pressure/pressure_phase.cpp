@@ -1,5 +1,6 @@
 // IceSolver phases 2 and 5 (and the units computeVolumeFluxes, explicitPressureIncrement): the equilibrium pressure of each cell and the explicit pressure
 // increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -145,9 +146,19 @@ void IceSolver::computeEquilibriumPressure() {
       ea[a] = en[ownedCells_[a]];
     }
     m.eos->soundSpeed2(ra.size(), ra.data(), ea.data(), c2.data());
+    const double* ms = m.mass.data();
     for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
       const std::int64_t c = ownedCells_[a];
       const double rm = ra[a];
+      if (!(ms[c] > 0) && (rm == 0.0 || !std::isfinite(rm))) {
+        // An absent material at a pressure its law does not reach with a positive density (an
+        // ideal gas at a cavitated liquid's cut-off 0, where rho = 0): no volume, and a specific
+        // volume of 0 rather than 1 / 0, so that advection's m v stays 0 (inf * 0 was NaN).
+        th[c] = nm == 1 ? 1.0 : 0.0;
+        sv[c] = 0.0;
+        ka[c] = 0.0;
+        continue;
+      }
       th[c] = nm == 1 ? 1.0 : th[c] / rm;
       sv[c] = 1.0 / rm;
       ka[c] = 1.0 / (rm * c2[a]);
@@ -156,6 +167,12 @@ void IceSolver::computeEquilibriumPressure() {
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no
   // p dV work) in this step: it is incompressible below its own pressure.
   for (const auto& [r, c] : equil_->heldTraces()) st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = 0.0;
+  // A cavitated liquid (docs/ice.md "Cavitation") is at its cut-off pressure at any density below
+  // the law's there: zero sound speed, infinite compressibility. The cell's kbar is then infinite:
+  // the pressure increment is 0 and the cavitated liquids take the cell's whole volume change
+  // (computeSourcesAndLagrangian), so the pressure stays at the cut-off while the cavity opens or closes.
+  for (const auto& [r, c] : equil_->cavitated())
+    st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
 
   double* pe = st_.pressEq.data();
   const double* p = st_.press.data();
@@ -193,10 +210,22 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
 }
 
 void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) {
+  bool anyCav = false;
+  for (const MaterialState& m : st.mat) anyCav = anyCav || (!m.external && m.eos->cavitates());
   forEach(owned, [&](int i, int j, int k) {
     double kbar = 0;
     for (const MaterialState& m : st.mat) kbar += m.theta(i, j, k) * m.kappa(i, j, k);
-    const double dp = kbar > 0 ? -dt * st.divU(i, j, k) / kbar : 0.0;
+    double dp = kbar > 0 ? -dt * st.divU(i, j, k) / kbar : 0.0;
+    // A cavitating liquid's cut-off bounds the increment too (docs/ice.md "Cavitation"): a cell
+    // that would expand through it in this step cavitates at it (its volume change beyond is the
+    // cavity's, which the next equilibrium pressure finds).
+    if (anyCav) {
+      double pc = -std::numeric_limits<double>::infinity();
+      for (const MaterialState& m : st.mat)
+        if (!m.external && m.mass(i, j, k) > 0 && m.theta(i, j, k) > kPresentFraction)
+          pc = std::max(pc, m.eos->cavitationPressure());
+      if (st.pressEq(i, j, k) + dp < pc) dp = std::min(0.0, pc - st.pressEq(i, j, k));
+    }
     st.dp(i, j, k) = dp;
     st.press(i, j, k) = st.pressEq(i, j, k) + dp;
   });
