@@ -131,6 +131,7 @@ def main():
                     help="[s]; the no-strength foam's run stops at 39 us (water above its crushed top)")
     ap.add_argument("--models", default=",".join(MODELS))
     ap.add_argument("--skip-run", action="store_true")
+    ap.add_argument("--jobs", type=int, default=2, help="runs at a time")
     ap.add_argument("--full", action="store_true",
                     help="the shipped scene's depth (foam on the bottom, 21 cm below the charge; needs the water's "
                          "cavitation model to run past 49.5 us); use --end 1.5e-4")
@@ -147,7 +148,7 @@ def main():
         if not args.skip_run:
             procs.append((m, subprocess.Popen([exe, path], cwd=out, stdout=open(path[:-5] + ".log", "w"),
                                               stderr=subprocess.STDOUT)))
-        if len(procs) == 2 or (m == models[-1] and procs):
+        if len(procs) == args.jobs or (m == models[-1] and procs):
             for name, pr in procs:
                 if pr.wait() != 0:
                     print(f"{name}: mpmice exit {pr.returncode} (see the .log beside its scene in {out}); its outputs up to the stop are used")

@@ -151,9 +151,9 @@ void IceSolver::computeEquilibriumPressure() {
       const std::int64_t c = ownedCells_[a];
       const double rm = ra[a];
       if (!(ms[c] > 0) && (rm == 0.0 || !std::isfinite(rm))) {
-        // An absent material at a pressure its law does not reach with a positive density (an
-        // ideal gas at a cavitated liquid's cut-off 0, where rho = 0): no volume, and a specific
-        // volume of 0 rather than 1 / 0, so that advection's m v stays 0 (inf * 0 was NaN).
+        // An absent material at a pressure its law reaches only at zero density (an ideal gas at a
+        // cavitated liquid's cut-off 0): no volume, and a specific volume of 0 rather than 1 / 0,
+        // so that advection's m v stays 0 (inf * 0 was NaN).
         th[c] = nm == 1 ? 1.0 : 0.0;
         sv[c] = 0.0;
         ka[c] = 0.0;
@@ -162,6 +162,9 @@ void IceSolver::computeEquilibriumPressure() {
       th[c] = nm == 1 ? 1.0 : th[c] / rm;
       sv[c] = 1.0 / rm;
       ka[c] = 1.0 / (rm * c2[a]);
+      // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
+      // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
+      if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
     }
   }
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no
