@@ -31,6 +31,16 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
     failures.push_back(fl);
     iters[c] = iterations;
   };
+  // An absent material's density at the cell's pressure p (its state if it arrives). Where its law
+  // gives none with a finite positive density there (an ideal gas at p = 0, a cavitated liquid's
+  // cut-off), it keeps the density it carries (1 otherwise): its specific volume stays finite.
+  auto absentDensity = [&](std::size_t r, std::int64_t c, double pc) {
+    const double vc = carriedVolume ? (*carriedVolume)[r][c] : 0.0;  // read before rhoMicro (aliased)
+    double rr, dd;
+    eos_[r]->density(1, &pc, &e[r][c], &rr, &dd);
+    if (rr == 0.0 || !std::isfinite(rr)) rr = vc > 0 && std::isfinite(vc) ? 1.0 / vc : 1.0;
+    rhoMicro[r][c] = rr;
+  };
   if (nm == 1) {  // one material fills the cell: theta = 1, p from the EOS directly
     for (const std::int64_t c : cells) {
       const double r = rho[0][c];
@@ -56,16 +66,12 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       if (p[c] < pCav_[o]) p[c] = pCav_[o], cavitated_.emplace_back(only, c);  // below the cut-off: a cavity
       iters[c] = 0;
       for (std::size_t r = 0; r < nm; ++r) {
-        double dd;
         if (r == o) rhoMicro[r][c] = rho[r][c];
-        else eos_[r]->density(1, &p[c], &e[r][c], &rhoMicro[r][c], &dd);
+        else absentDensity(r, c, p[c]);
       }
     } else {  // empty cells (no material yet) keep their pressure
       iters[c] = 0;
-      for (std::size_t r = 0; r < nm; ++r) {
-        double dd;
-        eos_[r]->density(1, &p[c], &e[r][c], &rhoMicro[r][c], &dd);
-      }
+      for (std::size_t r = 0; r < nm; ++r) absentDensity(r, c, p[c]);
     }
   }
   // The admissible interval's lower end per active cell: the largest floor of the present materials.
@@ -145,12 +151,15 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
       bool ok = true;
       for (std::size_t r = 0; r < nm && ok; ++r) {
         const double m = rho[r][c];
+        if (!(m > 0)) {  // absent: its density at F (the iteration below recomputes it if needed)
+          absentDensity(r, c, F);
+          continue;
+        }
         double rr, dd;
         const double* ph = traces ? pHold_[r].data() : none;
-        if (m > 0 && ph && F < ph[c]) rr = rhoHold_[r][c];
+        if (ph && F < ph[c]) rr = rhoHold_[r][c];
         else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
-        rhoMicro[r][c] = rr;  // absent materials: their density at F, as the iteration gives them
-        if (!(m > 0)) continue;
+        rhoMicro[r][c] = rr;
         if (!(rr > 0) || !std::isfinite(rr)) ok = false;
         else if (pCav_[r] == F && !(ph && ph[c] > -inf)) vCav += m / rr;
         else vOther += m / rr;

@@ -150,15 +150,6 @@ void IceSolver::computeEquilibriumPressure() {
     for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
       const std::int64_t c = ownedCells_[a];
       const double rm = ra[a];
-      if (!(ms[c] > 0) && (rm == 0.0 || !std::isfinite(rm))) {
-        // An absent material at a pressure its law reaches only at zero density (an ideal gas at a
-        // cavitated liquid's cut-off 0): no volume, and a specific volume of 0 rather than 1 / 0,
-        // so that advection's m v stays 0 (inf * 0 was NaN).
-        th[c] = nm == 1 ? 1.0 : 0.0;
-        sv[c] = 0.0;
-        ka[c] = 0.0;
-        continue;
-      }
       th[c] = nm == 1 ? 1.0 : th[c] / rm;
       sv[c] = 1.0 / rm;
       ka[c] = 1.0 / (rm * c2[a]);
