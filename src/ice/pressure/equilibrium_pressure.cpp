@@ -159,6 +159,12 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
         const double* ph = traces ? pHold_[r].data() : none;
         if (ph && F < ph[c]) rr = rhoHold_[r][c];
         else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
+        if (!(rr > 0) && pCav_[r] != F) {
+          // F is the end of this material's range too (a solid_bulk solid has no state at p <= 0,
+          // and its density tends to ~rho0 (p / p_ref)^(p_ref / K) as p -> 0+): its limit from above.
+          const double Fp = F + 1e-9 * std::max(std::abs(F), 1.0);
+          eos_[r]->density(1, &Fp, &e[r][c], &rr, &dd);
+        }
         rhoMicro[r][c] = rr;
         if (!(rr > 0) || !std::isfinite(rr)) ok = false;
         else if (pCav_[r] == F && !(ph && ph[c] > -inf)) vCav += m / rr;
