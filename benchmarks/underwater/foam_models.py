@@ -51,14 +51,29 @@ CHARGE_BOTTOM = 0.238           # [m], the scene's charge box
 FOAM_THICKNESS = 0.03
 FOAM_BOTTOM = 0.148             # the cut's bottom: foam top 6 cm below the charge
 FOOT = 0.02                     # [m] the bottom stress is averaged over x < FOOT
-PROBES = [("axis_4cm", 0.002, CHARGE_BOTTOM - 0.04), ("axis_above_foam", 0.002, FOAM_BOTTOM + FOAM_THICKNESS + 0.006),
-          ("side_4cm", 0.05, CHARGE_BOTTOM - 0.04)]
+def probes(bottom):
+    """The water pressure points: 4 cm below the charge on the axis, 6 mm above the foam on the axis,
+    4 cm below the charge 5 cm to the side."""
+    return [("axis_4cm", 0.002, CHARGE_BOTTOM - 0.04), ("axis_above_foam", 0.002, bottom + FOAM_THICKNESS + 0.006),
+            ("side_4cm", 0.05, CHARGE_BOTTOM - 0.04)]
+
+
+PROBES = probes(FOAM_BOTTOM)
 MODELS = ["water", "air", "none"]
 P_AMBIENT = 1.0e5
 
 
-def scene(model, end):
+def scene(model, end, full=False):
     s = yaml.safe_load(open(SCENE))
+    if full:   # the shipped scene's depth: the foam on the container's bottom, 21 cm below the charge
+        s["scene"] = f"underwater_foam_full_{model}"
+        s["description"] = f"Underwater shock on the foam 21 cm below the charge, foam model '{model}'"
+        s["time"]["end"] = end
+        foam_material(s, model)
+        s["geometry"] = [g for g in s["geometry"] if g["name"] != "tube"]
+        s["output"]["directory"] = s["scene"]
+        s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, FOAM_THICKNESS]}]
+        return s
     s["scene"] = f"underwater_foam_{model}"
     s["description"] = f"Underwater shock on a foam 6 cm below the charge, foam model '{model}'"
     s["mesh"]["lower"] = [0.0, FOAM_BOTTOM]
@@ -68,6 +83,14 @@ def scene(model, end):
     foam["shape"] = {"type": "box", "lo": [0.0, FOAM_BOTTOM], "hi": [s["mesh"]["upper"][0], top]}
     water = next(g for g in s["geometry"] if g["name"] == "water")
     water["shape"]["lo"][1] = top
+    foam_material(s, model)
+    s["geometry"] = [g for g in s["geometry"] if g["name"] != "tube"]
+    s["output"]["directory"] = s["scene"]
+    s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, top]}]
+    return s
+
+
+def foam_material(s, model):
     mat = next(m for m in s["materials"] if m["name"] == "foam")
     if model == "water":
         mat["density"] = 270.0 + 0.9 * 1000.0
@@ -77,13 +100,9 @@ def scene(model, end):
     if model == "none":
         for k in ("plateau_stress", "hardening_gamma", "hardening_alpha2"):
             mat["model"][k] = float(mat["model"][k]) * 1e-3   # (PyYAML reads 1.5e6 as a string)
-    s["geometry"] = [g for g in s["geometry"] if g["name"] != "tube"]
-    s["output"]["directory"] = s["scene"]
-    s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, top]}]
-    return s
 
 
-def histories(directory, name, dy):
+def histories(directory, name, dy, bottom):
     """Per output: time, the water pressure at PROBES, the bottom stress."""
     rows = []
     for f in sorted(glob.glob(os.path.join(directory, f"{name}_[0-9][0-9][0-9][0-9][0-9][0-9].h5"))):
@@ -91,11 +110,11 @@ def histories(directory, name, dy):
             t = float(h.attrs["time"])
             o, d = h.attrs["origin"], h.attrs["spacing"]
             p = h["grid/cell/pressure"][0]
-            probe = [float(p[int((y - o[1]) / d[1]), int((x - o[0]) / d[0])]) for _, x, y in PROBES]
+            probe = [float(p[int((y - o[1]) / d[1]), int((x - o[0]) / d[0])]) for _, x, y in probes(bottom)]
             pos = h["particles/position"][:]
             st = h["particles/stress"][:]
             syy = st[:, 1]                                   # (xx, yy, zz, xy, yz, xz)
-            foot = (pos[:, 1] < FOAM_BOTTOM + 0.5 * dy) & (pos[:, 0] < FOOT)
+            foot = (pos[:, 1] < bottom + 0.5 * dy) & (pos[:, 0] < FOOT)
             # the normal stress on the bottom: the cells' pressure (above the ambient) on the mixture
             # plus the foam's own stress, over the bottom row within FOOT of the axis
             nfoot = max(1, int(round(FOOT / d[0])))
@@ -112,6 +131,10 @@ def main():
                     help="[s]; the no-strength foam's run stops at 39 us (water above its crushed top)")
     ap.add_argument("--models", default=",".join(MODELS))
     ap.add_argument("--skip-run", action="store_true")
+    ap.add_argument("--jobs", type=int, default=2, help="runs at a time")
+    ap.add_argument("--full", action="store_true",
+                    help="the shipped scene's depth (foam on the bottom, 21 cm below the charge; needs the water's "
+                         "cavitation model to run past 49.5 us); use --end 1.5e-4")
     args = ap.parse_args()
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
@@ -119,26 +142,27 @@ def main():
     models = args.models.split(",")
     procs = []
     for m in models:
-        s = scene(m, args.end)
+        s = scene(m, args.end, args.full)
         path = os.path.join(out, s["scene"] + ".yaml")
         yaml.safe_dump(s, open(path, "w"), sort_keys=False)
         if not args.skip_run:
             procs.append((m, subprocess.Popen([exe, path], cwd=out, stdout=open(path[:-5] + ".log", "w"),
                                               stderr=subprocess.STDOUT)))
-        if len(procs) == 2 or (m == models[-1] and procs):
+        if len(procs) == args.jobs or (m == models[-1] and procs):
             for name, pr in procs:
                 if pr.wait() != 0:
-                    print(f"{name}: mpmice exit {pr.returncode} (see {out}/underwater_foam_{name}.log); its outputs up to the stop are used")
+                    print(f"{name}: mpmice exit {pr.returncode} (see the .log beside its scene in {out}); its outputs up to the stop are used")
             procs = []
     summary, curves = [], []
     for m in models:
-        name = f"underwater_foam_{m}"
+        name = f"underwater_foam_full_{m}" if args.full else f"underwater_foam_{m}"
+        bottom = 0.0 if args.full else FOAM_BOTTOM
         d = os.path.join(out, name)
         dy = yaml.safe_load(open(os.path.join(out, name + ".yaml")))["mesh"]["spacing"][1]
         pr = list(csv.DictReader(open(os.path.join(d, name + "_probes.csv"))))
         tp = np.array([float(r["time"]) for r in pr])
         thick = FOAM_THICKNESS + np.array([float(r["foam_top_uy"]) for r in pr])
-        hist = histories(d, name, dy)
+        hist = histories(d, name, dy, bottom)
         for t, th in zip(tp[::10], thick[::10]):
             curves.append((m, "thickness", t, th))
         for row in hist:

@@ -188,6 +188,21 @@ const ModelFamily& solidEquationsOfState() {
   return f;
 }
 
+const ModelFamily& cavitationModels() {
+  static const ModelFamily f{
+      "cavitation model",
+      {
+          {"pressure_cutoff",
+           "one-fluid cavitation: the liquid's pressure does not fall below the cut-off; below the density "
+           "where its EOS reaches it the cell opens a cavity at that pressure (docs/ice.md \"Cavitation\")",
+           {required("pressure", Range::any(),
+                     "cut-off pressure p_c [Pa]: the vapour pressure (~2.3e3 for water at 20 C), 0, or a "
+                     "tensile limit (< 0); below the liquid's initial pressure")},
+           {}},
+      }};
+  return f;
+}
+
 ModelSpec readModel(const YamlValue& v, const ModelFamily& family) {
   if (v.isScalar())
     v.fail("expected a mapping with the " + family.noun + " and its parameters, such as {type: " +

@@ -56,6 +56,7 @@ struct ModelFamily {
 const ModelFamily& constitutiveModels();     // linear_elastic, neo_hookean, j2_plasticity
 const ModelFamily& fluidEquationsOfState();  // ideal_gas, stiffened_gas, mie_gruneisen, jwl
 const ModelFamily& solidEquationsOfState();  // solid_bulk
+const ModelFamily& cavitationModels();       // pressure_cutoff (a fluid's `cavitation:`)
 
 /// Reads a model mapping `{type: name, param: value, ...}` of `family`; fills defaults and, for
 /// models with elastic constants, all four of them. Derived parameters stay absent.

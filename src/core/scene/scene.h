@@ -65,6 +65,7 @@ struct MaterialSpec {
   double viscosity = 0;             // dynamic viscosity [Pa s]; 0 = inviscid
   double thermal_conductivity = 0;  // [W/(m K)]; 0 = no conduction
   double thermal_expansivity = 0;   // beta [1/K] (solids)
+  ModelSpec cavitation;             // fluids: pressure_cutoff (type empty: none; docs/ice.md "Cavitation")
   SourceLoc where;
   bool operator==(const MaterialSpec&) const = default;
 };

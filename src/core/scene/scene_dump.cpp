@@ -163,6 +163,8 @@ void materials(std::ostream& o, const Scene& s) {
       o << "    eos: " << model(m.eos, scene_detail::fluidEquationsOfState()) << "\n";
       if (m.density > 0) o << "    density: " << num(m.density) << "\n";
       o << "    viscosity: " << num(m.viscosity) << "\n";
+      if (!m.cavitation.type.empty())
+        o << "    cavitation: {model: " << m.cavitation.type << ", pressure: " << num(m.cavitation.get("pressure")) << "}\n";
     } else {
       o << "    kind: solid\n";
       o << "    density: " << num(m.density) << "\n";

@@ -53,6 +53,7 @@ std::string sceneHash(const Scene& s) {
   for (const auto& mat : s.materials) {
     c << mat.name << (mat.kind == MaterialKind::Solid ? "solid" : "fluid") << mat.density << mat.constitutive
       << mat.eos << mat.specific_heat << mat.viscosity << mat.thermal_conductivity << mat.thermal_expansivity;
+    if (!mat.cavitation.type.empty()) c << "cavitation" << mat.cavitation;  // absent: the hash as before
   }
   c << "boundary";
   for (const auto& b : s.boundary) {

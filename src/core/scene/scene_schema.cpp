@@ -197,7 +197,7 @@ class SchemaReader {
                        "] has it already); material names must be unique");
     const std::string kind = m.required("kind").choice({"fluid", "solid"}, "material kind");
     const std::vector<std::string> fluidKeys{"name", "kind", "eos", "density", "specific_heat", "viscosity",
-                                             "thermal_conductivity"};
+                                             "thermal_conductivity", "cavitation"};
     const std::vector<std::string> solidKeys{"name", "kind", "density", "model", "eos", "specific_heat",
                                              "thermal_conductivity", "thermal_expansivity"};
     // specific_heat: cv [J/(kg K)]; thermal_conductivity [W/(m K)].
@@ -207,6 +207,8 @@ class SchemaReader {
       mat.eos = readModel(m.required("eos"), fluidEquationsOfState());          // eos: see catalog
       mat.density = m.number("density", 0.0, Range::positive());               // optional reference
       mat.viscosity = m.number("viscosity", mat.viscosity, Range::nonNegative());  // [Pa s]
+      // cavitation: {model: pressure_cutoff, pressure: p_c} (docs/ice.md "Cavitation"); absent: none.
+      if (const auto cav = m.get("cavitation")) mat.cavitation = readCavitation(*cav, mat);
     } else {
       mat.kind = MaterialKind::Solid;
       allowFor(m, solidKeys, fluidKeys, "material '" + mat.name + "' is a solid");
@@ -219,6 +221,33 @@ class SchemaReader {
     mat.specific_heat = m.number("specific_heat", mat.specific_heat, Range::positive());
     mat.thermal_conductivity = m.number("thermal_conductivity", 0.0, Range::nonNegative());
     return mat;
+  }
+
+  /// `cavitation: {model: pressure_cutoff, pressure: p_c}` of fluid `mat`: a model mapping whose
+  /// name key is `model` (checked against cavitationModels()). Only liquids may cavitate.
+  static ModelSpec readCavitation(const YamlValue& v, const MaterialSpec& mat) {
+    if (!v.isMap()) v.fail("expected a mapping {model: pressure_cutoff, pressure: <Pa>}; got " + v.shown());
+    const YamlMap map = v.map();
+    const YamlValue model = map.required("model");
+    const ModelFamily& family = cavitationModels();
+    ModelSpec c;
+    c.where = v.loc();
+    c.type = model.choice(family.names(), family.noun);
+    std::vector<std::string> keys = family.find(c.type)->keys();
+    std::replace(keys.begin(), keys.end(), std::string("type"), std::string("model"));
+    map.allow(keys);
+    for (const auto& p : family.find(c.type)->params) c.params[p.name] = map.number(p.name, p.range);
+    if (mat.eos.type != "mie_gruneisen" && mat.eos.type != "stiffened_gas")
+      model.fail("material '" + mat.name + "' has the equation of state '" + mat.eos.type +
+                 "'; cavitation applies to liquids: mie_gruneisen or stiffened_gas");
+    if (mat.eos.type == "stiffened_gas" && !(c.params["pressure"] > -mat.eos.get("p_inf")))
+      map.required("pressure").fail("the cut-off " + str(c.params["pressure"]) + " Pa must lie above the stiffened gas's " +
+                                    "lowest pressure -p_inf = " + str(-mat.eos.get("p_inf")) + " Pa");
+    if (mat.eos.type == "mie_gruneisen" && !(c.params["pressure"] < mat.eos.get("reference_pressure", 0.0)))
+      map.required("pressure").fail("the cut-off " + str(c.params["pressure"]) + " Pa must lie below the " +
+                                    "liquid's reference_pressure " + str(mat.eos.get("reference_pressure", 0.0)) +
+                                    " Pa (a vapour pressure or a tensile limit)");
+    return c;
   }
 
   /// A reference to a material by name; `kind` restricts it (nullptr: any).

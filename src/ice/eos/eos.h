@@ -9,6 +9,7 @@
 /// lies below the range the EOS can reach (the equilibrium-pressure bracket uses that).
 /// Temperature: T = (e - e_cold(rho)) / cv, where e_cold is zero except for stiffened gas.
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,6 +40,15 @@ class Eos {
   /// Part of e that does not depend on temperature (e = cv T + coldEnergy(rho)).
   [[nodiscard]] virtual double coldEnergy(double /*rho*/) const { return 0.0; }
 
+  /// Cavitation (docs/ice.md "Cavitation", a fluid's `cavitation: {model: pressure_cutoff}`): the
+  /// cut-off p_c below which the liquid's pressure does not fall (-inf: none). The law above is
+  /// unchanged; the equilibrium pressure (EquilibriumPressure) applies the cut-off: at p = p_c the
+  /// liquid's density may fall below the density where its law reaches p_c (the cell opens a
+  /// cavity), with zero sound speed (infinite compressibility) while it does.
+  [[nodiscard]] double cavitationPressure() const { return pCav_; }
+  [[nodiscard]] bool cavitates() const { return pCav_ > -std::numeric_limits<double>::infinity(); }
+  void setCavitationPressure(double pc) { pCav_ = pc; }
+
   [[nodiscard]] double cv() const { return cv_; }
   [[nodiscard]] double temperature(double rho, double e) const { return (e - coldEnergy(rho)) / cv_; }
   [[nodiscard]] double energyFromTemperature(double rho, double T) const { return cv_ * T + coldEnergy(rho); }
@@ -51,6 +61,7 @@ class Eos {
 
  private:
   double cv_;
+  double pCav_ = -std::numeric_limits<double>::infinity();
 };
 
 /// Builds the EOS named spec.type with spec's parameters (throws std::invalid_argument naming

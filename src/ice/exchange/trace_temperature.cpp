@@ -27,6 +27,8 @@
 // comes from the solids in proportion to their heat capacities (for a trace, ~1e-13 of theirs), so
 // energy is conserved, and the solids' part goes to their solver with the exchange increments
 // (dEnergy).
+#include <cmath>
+
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -50,7 +52,8 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       CsdTs += C * (m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]) -
                     m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]));
     }
-    if (!(Cs > 0) || !(kbar > 0)) return;
+    // A cavitated liquid (kbar = inf) takes the cell's whole volume change: the solids carry none.
+    if (!(Cs > 0) || !(kbar > 0) || std::isinf(kbar)) return;
     const double w = ks / kbar, dTs = CsdTs / Cs, kappaS = thetaS > 0 ? ks / thetaS : 0.0;
     double Q = 0;  // heat [J] the fluids take from the solids
     for (MaterialState& m : st_.mat) {

@@ -11,6 +11,7 @@ EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tol
     : eos_(std::move(eos)), tol_(tolerance), maxIt_(maxIterations), fluid_(std::move(fluid)),
       traceY_(traceMassFraction) {
   fluid_.resize(eos_.size(), false);
+  for (const Eos* law : eos_) pCav_.push_back(law->cavitationPressure());
 }
 
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std::int64_t>& cells,
@@ -19,6 +20,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
                                                            const std::vector<double*>& rhoMicro, double* iters,
                                                            const std::vector<const double*>* carriedVolume) {
   held_.clear();
+  cavitated_.clear();
   std::vector<EquilibriumFailure> failures;
   if (cells.size() <= kBlock) {
     solveBlock(cells, rho, e, p, rhoMicro, iters, carriedVolume, failures);
@@ -46,11 +48,22 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     failures.push_back(fl);
     iters[c] = iterations;
   };
+  // An absent material's density at the cell's pressure p (its state if it arrives). Where its law
+  // gives none with a finite positive density there (an ideal gas at p = 0, a cavitated liquid's
+  // cut-off), it keeps the density it carries (1 otherwise): its specific volume stays finite.
+  auto absentDensity = [&](std::size_t r, std::int64_t c, double pc) {
+    const double vc = carriedVolume ? (*carriedVolume)[r][c] : 0.0;  // read before rhoMicro (aliased)
+    double rr, dd;
+    eos_[r]->density(1, &pc, &e[r][c], &rr, &dd);
+    if (rr == 0.0 || !std::isfinite(rr)) rr = vc > 0 && std::isfinite(vc) ? 1.0 / vc : 1.0;
+    rhoMicro[r][c] = rr;
+  };
   if (nm == 1) {  // one material fills the cell: theta = 1, p from the EOS directly
     for (const std::int64_t c : cells) {
       const double r = rho[0][c];
       double pc;
       eos_[0]->pressure(1, &r, &e[0][c], &pc);
+      if (pc < pCav_[0]) pc = pCav_[0], cavitated_.emplace_back(0, c);  // below the cut-off: a cavity
       p[c] = pc;
       rhoMicro[0][c] = r;
       iters[c] = 0;
@@ -67,18 +80,15 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     } else if (present == 1) {  // one material fills the cell: p from its EOS, no iteration
       const auto o = static_cast<std::size_t>(only);
       eos_[o]->pressure(1, &rho[o][c], &e[o][c], &p[c]);
+      if (p[c] < pCav_[o]) p[c] = pCav_[o], cavitated_.emplace_back(only, c);  // below the cut-off: a cavity
       iters[c] = 0;
       for (std::size_t r = 0; r < nm; ++r) {
-        double dd;
         if (r == o) rhoMicro[r][c] = rho[r][c];
-        else eos_[r]->density(1, &p[c], &e[r][c], &rhoMicro[r][c], &dd);
+        else absentDensity(r, c, p[c]);
       }
     } else {  // empty cells (no material yet) keep their pressure
       iters[c] = 0;
-      for (std::size_t r = 0; r < nm; ++r) {
-        double dd;
-        eos_[r]->density(1, &p[c], &e[r][c], &rhoMicro[r][c], &dd);
-      }
+      for (std::size_t r = 0; r < nm; ++r) absentDensity(r, c, p[c]);
     }
   }
   // The admissible interval's lower end per active cell: the largest floor of the present materials.
@@ -136,11 +146,78 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
     }
   }
+  // Cavitating liquids (not traces that may be held): their cut-off is their floor. Where one sets
+  // the cell's floor F (strictly above the others'), f(F) with the liquids at the cut-off decides:
+  // f(F) >= 0 is a cavity at F (solved here), f(F) < 0 puts the root above F (iterated below).
+  cavFloor_.assign(na, 0);
+  bool anyCav = false;
+  for (std::size_t r = 0; r < nm; ++r) anyCav = anyCav || pCav_[r] > -inf;
+  if (anyCav) {
+    const double* none = nullptr;
+    for (std::size_t a = 0; a < na; ++a) {
+      const std::int64_t c = active_[a];
+      if (!(floor_[a] < inf)) continue;  // fails below
+      double F = floor_[a];
+      int cm = -1;
+      for (std::size_t r = 0; r < nm; ++r) {
+        const double* ph = traces ? pHold_[r].data() : none;
+        if (!(rho[r][c] > 0) || (ph && ph[c - c0_] > -inf) || !(pCav_[r] > F)) continue;
+        F = pCav_[r];
+        cm = static_cast<int>(r);
+      }
+      if (cm < 0) continue;
+      // f(F): the cavitating liquids (cut-off == F) at their density there, the others at theirs.
+      double vOther = 0, vCav = 0;
+      bool ok = true;
+      for (std::size_t r = 0; r < nm && ok; ++r) {
+        const double m = rho[r][c];
+        if (!(m > 0)) {  // absent: its density at F (the iteration below recomputes it if needed)
+          absentDensity(r, c, F);
+          continue;
+        }
+        double rr, dd;
+        const double* ph = traces ? pHold_[r].data() : none;
+        if (ph && F < ph[c - c0_]) rr = rhoHold_[r][static_cast<std::size_t>(c - c0_)];
+        else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
+        if (!(rr > 0) && pCav_[r] != F) {
+          // F is the end of this material's range too (a solid_bulk solid has no state at p <= 0,
+          // and its density tends to ~rho0 (p / p_ref)^(p_ref / K) as p -> 0+): its limit from above.
+          const double Fp = F + 1e-9 * std::max(std::abs(F), 1.0);
+          eos_[r]->density(1, &Fp, &e[r][c], &rr, &dd);
+        }
+        rhoMicro[r][c] = rr;
+        if (!(rr > 0) || !std::isfinite(rr)) ok = false;
+        else if (pCav_[r] == F && !(ph && ph[c - c0_] > -inf)) vCav += m / rr;
+        else vOther += m / rr;
+      }
+      floor_[a] = F;
+      floorMat_[a] = cm;
+      if (!ok) continue;  // a material without a state at F: the iteration names it
+      if (1.0 - vOther - vCav >= 0) {  // a cavity at F: the liquids share the volume left
+        const double free = 1.0 - vOther;
+        for (std::size_t r = 0; r < nm; ++r) {
+          const double m = rho[r][c];
+          const double* ph = traces ? pHold_[r].data() : none;
+          if (!(m > 0) || pCav_[r] != F || (ph && ph[c - c0_] > -inf)) continue;
+          const double share = free * (m / rhoMicro[r][c]) / vCav;  // its volume fraction
+          rhoMicro[r][c] = m / share;
+          cavitated_.emplace_back(static_cast<int>(r), c);
+        }
+        p[c] = F;
+        iters[c] = 0;
+        floor_[a] = inf;  // done: taken out of the iteration below
+        floorMat_[a] = -2;
+      } else {
+        cavFloor_[a] = 1;
+      }
+    }
+  }
   {
     std::size_t keep = 0;
     for (std::size_t a = 0; a < na; ++a) {
       const std::int64_t c = active_[a];
       const double F = floor_[a];
+      if (floorMat_[a] == -2) continue;  // cavitated above
       if (!(F < inf)) {  // some material has no admissible state at its energy
         fail(EquilibriumFailure::Kind::NoAdmissibleState, a, c, p[c], F, inf, inf, 0);
         continue;
@@ -150,10 +227,12 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       active_[keep] = c;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
+      cavFloor_[keep] = cavFloor_[a];
       ++keep;
     }
     na = keep;
     active_.resize(na);
+    cavFloor_.resize(na);
   }
   lo_.assign(floor_.begin(), floor_.begin() + static_cast<std::ptrdiff_t>(na));
   hi_.assign(na, inf);
@@ -220,7 +299,8 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         }
       }
       const bool collapsed = std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 4e-16 * std::max(std::abs(hi), std::abs(lo));
-      const bool atFloor = std::isfinite(F) && lo == F;  // no iterate below the root seen yet
+      // No iterate below the root seen yet (a cavitating floor F has f(F) < 0: the root is above it).
+      const bool atFloor = std::isfinite(F) && lo == F && !cavFloor_[a];
       if (collapsed && atFloor) {  // f > 0 down to the floor: no admissible root
         fail(EquilibriumFailure::Kind::NoRootAboveFloor, a, c, pc, lo, hi, f, it + 1);
         continue;
@@ -239,6 +319,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       hi_[keep] = hi;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
+      cavFloor_[keep] = cavFloor_[a];
       ++keep;
     }
     na = keep;
@@ -247,6 +328,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     hi_.resize(na);
     floor_.resize(na);
     floorMat_.resize(na);
+    cavFloor_.resize(na);
   }
   if (traces)
     for (const std::int64_t c : all_)

@@ -15,6 +15,15 @@
 /// cannot fill the cell at any admissible pressure), or no convergence in the iteration limit.
 /// A single material without an external partner takes p = EOS(rho, e) directly (0 iterations).
 ///
+/// Cavitation (docs/ice.md "Cavitation"; Eos::cavitationPressure): a liquid with a cut-off p_c
+/// admits p = p_c at every density up to rho_c(e), the density where its law reaches p_c, and no
+/// pressure below. Its floor in the cell is p_c. When it sets the cell's floor F (above every other
+/// material's floor) and at F, with the liquid at rho_c, the materials fill at most the cell
+/// (f(F) >= 0), the cell cavitates: p = F, the other materials take their volumes at F and the
+/// liquid the rest (its density falls below rho_c: the cavity). Otherwise the root lies above F
+/// and is found as usual. A cell of one material takes max(EOS(rho, e), p_c). cavitated() lists
+/// the (material, cell) pairs: zero sound speed, infinite compressibility in the step.
+///
 /// Traces (ice.trace_mass_fraction, docs/ice.md "Traces"): a fluid whose mass is below the
 /// fraction Y_t of the cell's fluid mass may be compressed by the cell's pressure but not pulled
 /// beyond the specific volume it carries into the step. For p below its own pressure at that
@@ -71,6 +80,10 @@ class EquilibriumPressure {
   /// own pressure): their compressibility is 0 in the step.
   [[nodiscard]] const std::vector<std::pair<int, std::int64_t>>& heldTraces() const { return held_; }
 
+  /// The (material, cell) pairs the last solve() left cavitated (at their cut-off pressure with a
+  /// density below the law's density there): their sound speed is 0 in the step.
+  [[nodiscard]] const std::vector<std::pair<int, std::int64_t>>& cavitated() const { return cavitated_; }
+
  private:
   static constexpr std::size_t kBlock = 1024;
   void solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
@@ -87,12 +100,13 @@ class EquilibriumPressure {
   std::vector<std::int64_t> block_;
   std::vector<std::vector<double>> pHold_, rhoHold_;
   std::vector<std::int64_t> all_;
-  std::vector<std::pair<int, std::int64_t>> held_;
+  std::vector<std::pair<int, std::int64_t>> held_, cavitated_;
+  std::vector<double> pCav_;  // per material: the cut-off (-inf: none)
   // Scratch over the active cells.
   std::vector<std::int64_t> active_;
   std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_;
   std::vector<int> floorMat_;
-  std::vector<char> bad_;
+  std::vector<char> bad_, cavFloor_;  // cavFloor_: F is a cavitating liquid's cut-off and f(F) < 0
 };
 
 }  // namespace mpmice::ice

@@ -1,5 +1,6 @@
 // IceSolver phases 2 and 5 (and the units computeVolumeFluxes, explicitPressureIncrement): the equilibrium pressure of each cell and the explicit pressure
 // increment dp = -dt div(sum_r theta_r u_f,r) / sum_r theta_r kappa_r (the paper's Eq. 11).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -147,17 +148,27 @@ void IceSolver::computeEquilibriumPressure() {
       ea[a] = en[ownedCells_[a]];
     }
     m.eos->soundSpeed2(ra.size(), ra.data(), ea.data(), c2.data());
+    const double* ms = m.mass.data();
     for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
       const std::int64_t c = ownedCells_[a];
       const double rm = ra[a];
       th[c] = nm == 1 ? 1.0 : th[c] / rm;
       sv[c] = 1.0 / rm;
       ka[c] = 1.0 / (rm * c2[a]);
+      // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
+      // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
+      if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
     }
   }
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no
   // p dV work) in this step: it is incompressible below its own pressure.
   for (const auto& [r, c] : equil_->heldTraces()) st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = 0.0;
+  // A cavitated liquid (docs/ice.md "Cavitation") is at its cut-off pressure at any density below
+  // the law's there: zero sound speed, infinite compressibility. The cell's kbar is then infinite:
+  // the pressure increment is 0 and the cavitated liquids take the cell's whole volume change
+  // (computeSourcesAndLagrangian), so the pressure stays at the cut-off while the cavity opens or closes.
+  for (const auto& [r, c] : equil_->cavitated())
+    st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
 
   double* pe = st_.pressEq.data();
   const double* p = st_.press.data();
@@ -215,11 +226,23 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) 
   for (std::size_t r = 0; r < nm; ++r) th[r] = st.mat[r].theta.data(), ka[r] = st.mat[r].kappa.data();
   const double *divU = st.divU.data(), *pe = st.pressEq.data();
   double *dpp = st.dp.data(), *p = st.press.data();
+  bool anyCav = false;
+  for (const MaterialState& m : st.mat) anyCav = anyCav || (!m.external && m.eos->cavitates());
   forEach(owned, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
     double kbar = 0;
     for (std::size_t r = 0; r < nm; ++r) kbar += th[r][c] * ka[r][c];
-    const double dp = kbar > 0 ? -dt * divU[c] / kbar : 0.0;
+    double dp = kbar > 0 ? -dt * divU[c] / kbar : 0.0;
+    // A cavitating liquid's cut-off bounds the increment too (docs/ice.md "Cavitation"): a cell
+    // that would expand through it in this step cavitates at it (its volume change beyond is the
+    // cavity's, which the next equilibrium pressure finds).
+    if (anyCav) {
+      double pc = -std::numeric_limits<double>::infinity();
+      for (const MaterialState& m : st.mat)
+        if (!m.external && m.mass.data()[c] > 0 && m.theta.data()[c] > kPresentFraction)
+          pc = std::max(pc, m.eos->cavitationPressure());
+      if (pe[c] + dp < pc) dp = std::min(0.0, pc - pe[c]);
+    }
     dpp[c] = dp;
     p[c] = pe[c] + dp;
   });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -54,7 +55,9 @@ std::string cellViolationOnly(const IceSolver& s, int i, int j, int k, std::int6
     const double T = m.eos->temperature(1.0 / v, e);
     if (!(T > 0 && T <= core::kMaxTemperature)) return bad("temperature [K]", who, T, "in (0, 1e9]");
     // kappa = 0: a trace held at its carried volume this step (incompressible, docs/ice.md "Traces").
-    const double c2 = m.kappa.data()[c] == 0.0 ? 1.0 : v / m.kappa.data()[c];
+    // kappa = inf: a cavitated liquid (zero sound speed at its cut-off, docs/ice.md "Cavitation").
+    const double ka = m.kappa.data()[c];
+    const double c2 = ka == 0.0 || (std::isinf(ka) && ka > 0 && m.eos->cavitates()) ? 1.0 : v / ka;
     if (!(c2 > 0 && c2 < core::kMaxSoundSpeed * core::kMaxSoundSpeed))
       return bad("sound speed [m/s]", who, c2 > 0 ? std::sqrt(c2) : c2, "in (0, speed of light)");
   }
@@ -91,12 +94,13 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
     // T = (e - e_cold(rho)) / cv, c^2 = v / kappa. Only stiffened gas has a cold energy (eos.h):
     // the others skip its virtual call per cell.
     const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+    const double kaCav = m.eos->cavitates() ? std::numeric_limits<double>::infinity() : 0.0;  // cavitated: kappa = inf
     for (int a = 0; a < n; ++a) {
       const double mass = ms[a], e = en[a], v = sv[a];
       ok &= std::isfinite(mass) & (mass >= 0) & std::isfinite(e) & std::isfinite(v) & (!(mass > 0) | (v > 0));
       const double eT = cold ? e - m.eos->coldEnergy(1.0 / v) : e;
       const bool present = (th[a] > kPresentFraction) & (mass > 0);
-      ok &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | ((ka[a] > 0) & (v < c2max * ka[a]))));
+      ok &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | (ka[a] == kaCav) | ((ka[a] > 0) & (v < c2max * ka[a]))));
     }
   }
   for (int a = 0; a < n; ++a) ok &= std::abs(sum[static_cast<std::size_t>(a)] - 1.0) <= kFractionSumTolerance;

@@ -62,6 +62,16 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
       badInput(reg.where, "geometry." + reg.name + ".density = " + formatNumber(*reg.density) + " must be > 0");
     if (!(reg.temperature > 0))
       badInput(reg.where, "geometry." + reg.name + ".temperature = " + formatNumber(reg.temperature) + " must be > 0");
+    for (const core::FillSpec& f : reg.fill) {  // a cavitating liquid starts above its cut-off
+      const int r = scene.materialIndex(f.material);
+      const Eos& law = *eos[static_cast<std::size_t>(r)];
+      if (!external(r) && law.cavitates() && f.volume_fraction > 0 && !(*reg.pressure > law.cavitationPressure()))
+        badInput(scene.materials[static_cast<std::size_t>(r)].cavitation.where,
+                 "materials." + f.material + ".cavitation.pressure = " + formatNumber(law.cavitationPressure()) +
+                     " Pa is not below the pressure " + formatNumber(*reg.pressure) + " Pa of geometry." + reg.name +
+                     " where it starts; the cut-off (a vapour pressure or a tensile limit) must lie below the liquid's " +
+                     "ambient pressure");
+    }
     for (const core::FillSpec& f : reg.fill) {
       const int r = scene.materialIndex(f.material);
       BackgroundState& bg = plan.background[static_cast<std::size_t>(r)];

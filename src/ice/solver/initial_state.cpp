@@ -77,6 +77,11 @@ void IceSolver::initialize(const core::Scene& scene) {
     anyConduction_ |= !m.external && ms.thermal_conductivity > 0;
     eos.push_back(m.eos.get());
   }
+  for (int r = 0; r < nm; ++r)
+    if (semiImplicit_ && st_.mat[r].eos->cavitates())
+      badInput(scene.materials[r].cavitation.where,
+               "materials." + st_.mat[r].name + ".cavitation: not available with ice.pressure_solver: semi_implicit "
+               "(a cavitated cell's infinite compressibility is not in its linear system); use explicit");
   st_.allocate(owned_, stored, dim);
   std::vector<bool> fluid;
   for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);

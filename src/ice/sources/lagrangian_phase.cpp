@@ -60,8 +60,18 @@ void IceSolver::computeSourcesAndLagrangian() {
   }
   forEach(owned_, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
-    double kbar = 0;
+    double kbar = 0, thetaCav = 0;
     for (const Ptr& P : ptr) kbar += P.th[c] * P.ka[c];
+    // A cavitated liquid (kappa = inf, docs/ice.md "Cavitation") makes kbar infinite: the
+    // cavitated liquids take the cell's volume change (shared by their volume fractions), the others none.
+    const bool cavity = std::isinf(kbar);
+    if (cavity)
+      for (const Ptr& P : ptr)
+        if (std::isinf(P.ka[c])) thetaCav += P.th[c];
+    auto volumeShare = [&](const Ptr& P) {
+      if (!cavity) return kbar > 0 ? P.th[c] * P.ka[c] / kbar : 0.0;
+      return std::isinf(P.ka[c]) ? P.th[c] / thetaCav : 0.0;
+    };
     const double p = press[c];
     const double div = divU[c];
     double gp[3] = {0, 0, 0};
@@ -79,7 +89,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     for (int r = 0; r < nm; ++r) {
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
-      const double f = kbar > 0 ? P.ka[c] / kbar : 0.0;
+      const double f = P.th[c] > 0 ? volumeShare(P) / P.th[c] : (kbar > 0 && !cavity ? P.ka[c] / kbar : 0.0);
       double ke0 = 0, ke1 = 0;
       for (int d = 0; d < 3; ++d) {
         const double u = P.u[d][c];
@@ -122,7 +132,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       }
       for (int r = 0; r < nm; ++r) {
         const Ptr& P = ptr[r];
-        const double share = (solid ? P.m[c] * P.cv / C : P.th[c] * P.ka[c] / kbar) * D;  // [J]
+        const double share = (solid ? P.m[c] * P.cv / C : volumeShare(P)) * D;  // [J]
         if (P.external) {
           if (P.m[c] > 0) {
             P.eL[c] += share / P.m[c];

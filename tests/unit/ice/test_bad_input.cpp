@@ -63,3 +63,40 @@ TEST(IceBadInput, UnknownOption) {
   s.ice.limiter = "koren";
   EXPECT_NE(errorOf(s).find("ice.limiter"), std::string::npos);
 }
+
+// Cavitation (docs/ice.md "Cavitation"): a cut-off at or above the liquid's starting pressure is
+// named with the region; the semi-implicit pressure is refused with the alternative.
+TEST(IceBadInput, CavitationCutoffAboveTheStartingPressure) {
+  core::Scene s = base();
+  s.materials[0] = test::stiffenedGas("water", 4.4, 6e8);
+  s.geometry[0].fill = s.geometry[1].fill = {{"water", 1.0}};
+  s.geometry[0].pressure = 2e5;
+  s.geometry[1].pressure = 1e5;
+  s.materials[0].cavitation = test::modelSpec("pressure_cutoff", {{"pressure", 1.5e5}});
+  const std::string m = errorOf(s);
+  EXPECT_NE(m.find("materials.water.cavitation.pressure"), std::string::npos) << m;
+  EXPECT_NE(m.find("geometry.right"), std::string::npos) << m;
+  EXPECT_NE(m.find("must lie below the liquid's ambient pressure"), std::string::npos) << m;
+}
+
+TEST(IceBadInput, CavitationBelowTheStiffenedGasFloorAndWithTheSemiImplicitPressure) {
+  core::Scene s = base();
+  s.materials[0] = test::stiffenedGas("water", 4.4, 6e8);
+  s.geometry[0].fill = s.geometry[1].fill = {{"water", 1.0}};
+  s.geometry[0].density = s.geometry[1].density = 1000;
+  s.geometry[0].pressure = s.geometry[1].pressure = 1e5;
+  s.materials[0].cavitation = test::modelSpec("pressure_cutoff", {{"pressure", -7e8}});
+  std::string m = errorOf(s);
+  EXPECT_NE(m.find("materials.water.cavitation.pressure"), std::string::npos) << m;
+  EXPECT_NE(m.find("lowest pressure of its equation of state"), std::string::npos) << m;
+  s.materials[0].cavitation = test::modelSpec("pressure_cutoff", {{"pressure", 0}});
+  EXPECT_EQ(errorOf(s), "");
+  s.ice.pressure_solver = "semi_implicit";
+  m = errorOf(s);
+  EXPECT_NE(m.find("materials.water.cavitation: not available with ice.pressure_solver: semi_implicit"),
+            std::string::npos) << m;
+  s.materials[0].cavitation = test::modelSpec("cut_off", {{"pressure", 0}});
+  s.ice.pressure_solver = "explicit";
+  m = errorOf(s);
+  EXPECT_NE(m.find("unknown model 'cut_off'; valid: pressure_cutoff"), std::string::npos) << m;
+}

@@ -149,6 +149,30 @@ std::vector<BadScene> badScenes() {
       {"missing EOS parameter",
        kMesh + kTime + "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gas}}\n" + kRegion,
        {"materials[0].eos: missing required parameter 'gamma'", "> 1"}},
+      {"unknown cavitation model",
+       kMesh + kTime +
+           "materials:\n  - {name: water, kind: fluid, eos: {type: stiffened_gas, gamma: 4.4, p_inf: 6e8}, "
+           "cavitation: {model: cut_off, pressure: 0}}\n" +
+           "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: water, pressure: 1e5}\n",
+       {"test.yaml:4:", "materials[0].cavitation.model: unknown cavitation model 'cut_off'", "pressure_cutoff"}},
+      {"cavitation of a gas",
+       kMesh + kTime +
+           "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gas, gamma: 1.4}, "
+           "cavitation: {model: pressure_cutoff, pressure: 0}}\n" + kRegion,
+       {"materials[0].cavitation.model", "cavitation applies to liquids: mie_gruneisen or stiffened_gas"}},
+      {"cavitation cut-off above the Mie-Gruneisen reference pressure",
+       kMesh + kTime +
+           "materials:\n  - {name: water, kind: fluid, eos: {type: mie_gruneisen, reference_density: 1000, "
+           "sound_speed: 1480, slope: 1.92, gruneisen: 0.35, reference_pressure: 1e5}, "
+           "cavitation: {model: pressure_cutoff, pressure: 2e5}}\n" +
+           "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: water, pressure: 1e5}\n",
+       {"materials[0].cavitation.pressure", "the cut-off 2e5 Pa must lie below the liquid's reference_pressure 1e5 Pa"}},
+      {"cavitation without its pressure",
+       kMesh + kTime +
+           "materials:\n  - {name: water, kind: fluid, eos: {type: stiffened_gas, gamma: 4.4, p_inf: 6e8}, "
+           "cavitation: {model: pressure_cutoff}}\n" +
+           "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: water, pressure: 1e5}\n",
+       {"materials[0].cavitation", "pressure"}},
       {"misspelled EOS parameter",
        kMesh + kTime + "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gas, gama: 1.4}}\n" + kRegion,
        {"materials[0].eos.gama: unknown key 'gama'", "did you mean 'gamma'?"}},

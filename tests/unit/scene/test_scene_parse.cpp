@@ -124,7 +124,7 @@ void clearLocations(ShapeSpec& s) {
   for (auto& c : s.children) clearLocations(c);
 }
 Scene withoutLocations(Scene s) {
-  for (auto& m : s.materials) m.where = m.constitutive.where = m.eos.where = {};
+  for (auto& m : s.materials) m.where = m.constitutive.where = m.eos.where = m.cavitation.where = {};
   for (auto& r : s.geometry) {
     r.where = {};
     clearLocations(r.shape);
@@ -411,12 +411,27 @@ TEST(SceneConfigs, PressurizedCylinderLoads) {
   expectRoundTrip(readFile(MPMICE_SOURCE_DIR "/configs/pressurized_cylinder.yaml"));
 }
 
+// A fluid's cavitation model (docs/ice.md "Cavitation") is read, dumped and read back.
+TEST(SceneParse, CavitationModelRoundTrips) {
+  const std::string text =
+      "mesh: {dim: 1, lower: [0], upper: [1], cells: [10]}\ntime: {end: 1}\n"
+      "materials:\n  - {name: water, kind: fluid, eos: {type: mie_gruneisen, reference_density: 1000, "
+      "sound_speed: 1480, slope: 1.92, gruneisen: 0.35, reference_pressure: 1e5}, "
+      "cavitation: {model: pressure_cutoff, pressure: -1e5}}\n"
+      "geometry:\n  - {shape: {type: box, lo: [0], hi: [1]}, material: water, pressure: 1e5}\n";
+  const Scene s = parseScene(text, "cav.yaml");
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].cavitation.type, "pressure_cutoff");
+  EXPECT_DOUBLE_EQ(s.materials[0].cavitation.get("pressure"), -1e5);
+  expectRoundTrip(text);
+}
+
 // docs/scene-reference.md must mention every model and parameter of the catalog.
 TEST(SceneReference, DocumentsEveryModelAndParameter) {
   const std::string doc = readFile(MPMICE_SOURCE_DIR "/docs/scene-reference.md");
   ASSERT_FALSE(doc.empty());
   for (const auto* family : {&scene_detail::constitutiveModels(), &scene_detail::fluidEquationsOfState(),
-                             &scene_detail::solidEquationsOfState()})
+                             &scene_detail::solidEquationsOfState(), &scene_detail::cavitationModels()})
     for (const auto& m : family->models) {
       EXPECT_NE(doc.find("`" + m.name + "`"), std::string::npos) << m.name;
       for (const auto& p : m.params) EXPECT_NE(doc.find("`" + p.name + "`"), std::string::npos) << m.name << "." << p.name;
