@@ -11,9 +11,12 @@
 
 using namespace mpmice;
 
-TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
+namespace {
+// Energy an air-filled 10 x 10 box (0.1 m cells, unit depth, slip walls) gains in 1 ms from a
+// source of 1e8 W/m^3 on the box [lo, hi] switched on for 5e-4 s.
+double heatedBoxEnergy(const char* name, core::RealVect lo, core::RealVect hi) {
   core::Scene s;
-  s.name = "heated";
+  s.name = name;
   s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, 0.1, 1}, {10, 10, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::SlipWall;
   s.time.end = 1e-3;
@@ -21,7 +24,7 @@ TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
   core::SourceSpec src;
   src.material = "air";
-  src.shape = test::box({0.3, 0.3, 0}, {0.7, 0.7, 1});  // 4 x 4 cells = 0.16 m^3 (unit depth)
+  src.shape = test::box(lo, hi);
   src.power_density = 1e8;
   src.start = 0;
   src.end = 5e-4;
@@ -29,7 +32,13 @@ TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
   ice::IceSolver sol(s, test::comm());
   const double e0 = sol.totals().energy;
   test::runToEnd(sol, s.time.end);
-  const double added = sol.totals().energy - e0;
+  return sol.totals().energy - e0;
+}
+}  // namespace
+
+TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
+  // 4 x 4 cells = 0.16 m^3 (unit depth)
+  const double added = heatedBoxEnergy("heated", {0.3, 0.3, 0}, {0.7, 0.7, 1});
   std::printf("  energy added %.6e J (expected %.6e J)\n", added, 1e8 * 0.16 * 5e-4);
   EXPECT_NEAR(added, 1e8 * 0.16 * 5e-4, 1e-9 * added);
 }
@@ -38,24 +47,9 @@ TEST(IceSources, EnergySourceAddsPowerTimesVolumeTimesDuration) {
 // energy added is power x the shape's own volume, not x the cells whose centre is inside (which
 // for the box below is 0.16 m^3, 14 % more than its 0.140625 m^3).
 TEST(IceSources, ACellTheShapesEdgeCutsTakesItsShareInside) {
-  core::Scene s;
-  s.name = "heated_cut";
-  s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, 0.1, 1}, {10, 10, 1});
-  for (auto& b : s.boundary) b.type = core::BoundaryType::SlipWall;
-  s.time.end = 1e-3;
-  s.materials = {test::idealGas("air")};
-  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
-  core::SourceSpec src;
-  src.material = "air";
-  src.shape = test::box({0.3, 0.3, 0}, {0.675, 0.675, 1});  // 0.375^2 = 0.140625 m^3 (unit depth)
-  src.power_density = 1e8;
-  src.start = 0;
-  src.end = 5e-4;
-  s.sources = {src};
-  ice::IceSolver sol(s, test::comm());
-  const double e0 = sol.totals().energy;
-  test::runToEnd(sol, s.time.end);
-  const double added = sol.totals().energy - e0, expected = 1e8 * 0.140625 * 5e-4;
+  // 0.375^2 = 0.140625 m^3 (unit depth)
+  const double added = heatedBoxEnergy("heated_cut", {0.3, 0.3, 0}, {0.675, 0.675, 1});
+  const double expected = 1e8 * 0.140625 * 5e-4;
   std::printf("  energy added %.6e J (expected %.6e J; by cell centres %.6e J)\n", added, expected, 1e8 * 0.16 * 5e-4);
   EXPECT_NEAR(added, expected, 1e-9 * expected);
 }
