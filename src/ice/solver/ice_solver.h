@@ -218,6 +218,8 @@ class IceSolver {
   // advection, a restore and whenever the state is set from outside (cellMixes() computes them
   // again).
   mutable CellMixes mixes_;
+  // The semi-implicit stable step's mixture impedance per cell (owned box grown by one).
+  mutable std::vector<double> impedanceScratch_;
   mutable bool mixesValid_ = false;
   [[nodiscard]] const CellMixes& cellMixes() const;
 };

@@ -20,6 +20,14 @@ std::string errorOf(const core::Scene& s) {
 
 core::Scene base() { return test::shockTube(10, {1, 0, 1}, {0.125, 0, 0.1}, 0.5, 0.2); }
 
+// base() with water (stiffened gas) on both sides.
+core::Scene waterBase() {
+  core::Scene s = base();
+  s.materials[0] = test::stiffenedGas("water", 4.4, 6e8);
+  s.geometry[0].fill = s.geometry[1].fill = {{"water", 1.0}};
+  return s;
+}
+
 }  // namespace
 
 TEST(IceBadInput, UnknownEosName) {
@@ -67,9 +75,7 @@ TEST(IceBadInput, UnknownOption) {
 // Cavitation (docs/ice.md "Cavitation"): a cut-off at or above the liquid's starting pressure is
 // named with the region; the semi-implicit pressure is refused with the alternative.
 TEST(IceBadInput, CavitationCutoffAboveTheStartingPressure) {
-  core::Scene s = base();
-  s.materials[0] = test::stiffenedGas("water", 4.4, 6e8);
-  s.geometry[0].fill = s.geometry[1].fill = {{"water", 1.0}};
+  core::Scene s = waterBase();
   s.geometry[0].pressure = 2e5;
   s.geometry[1].pressure = 1e5;
   s.materials[0].cavitation = test::modelSpec("pressure_cutoff", {{"pressure", 1.5e5}});
@@ -80,9 +86,7 @@ TEST(IceBadInput, CavitationCutoffAboveTheStartingPressure) {
 }
 
 TEST(IceBadInput, CavitationBelowTheStiffenedGasFloorAndWithTheSemiImplicitPressure) {
-  core::Scene s = base();
-  s.materials[0] = test::stiffenedGas("water", 4.4, 6e8);
-  s.geometry[0].fill = s.geometry[1].fill = {{"water", 1.0}};
+  core::Scene s = waterBase();
   s.geometry[0].density = s.geometry[1].density = 1000;
   s.geometry[0].pressure = s.geometry[1].pressure = 1e5;
   s.materials[0].cavitation = test::modelSpec("pressure_cutoff", {{"pressure", -7e8}});

@@ -119,13 +119,7 @@ std::unique_ptr<ice::IceSolver> airWithSteel(double K) {
   s.name = "external";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  core::MaterialSpec steel;
-  steel.name = "steel";
-  steel.kind = core::MaterialKind::Solid;
-  steel.eos.type = "solid_bulk";
-  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
-  steel.specific_heat = 450;
-  s.materials = {test::idealGas("air"), steel};
+  s.materials = {test::idealGas("air"), test::externalSteel()};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
   s.ice.exchange_momentum = K;
   auto solver = std::make_unique<ice::IceSolver>(s, test::comm());

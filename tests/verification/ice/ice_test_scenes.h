@@ -37,6 +37,18 @@ inline core::MaterialSpec stiffenedGas(const std::string& name, double gamma, do
   return m;
 }
 
+/// Steel as ICE sees a solid: an external material with the solid_bulk EOS (K = 117 GPa,
+/// threshold 101325 Pa, rho0 = 8900 kg/m^3, cv = 450 J/kg/K).
+inline core::MaterialSpec externalSteel() {
+  core::MaterialSpec steel;
+  steel.name = "steel";
+  steel.kind = core::MaterialKind::Solid;
+  steel.eos.type = "solid_bulk";
+  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
+  steel.specific_heat = 450;
+  return steel;
+}
+
 inline core::ShapeSpec box(core::RealVect lo, core::RealVect hi) {
   core::ShapeSpec s;
   s.type = "box";

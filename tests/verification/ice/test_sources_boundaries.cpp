@@ -139,18 +139,6 @@ TEST(IceEos, MieGruneisenWaterAndJwlProductsRun) {
   EXPECT_LT(speed, 4000.0);
 }
 
-namespace {
-/// Steel as ICE sees a solid: an external material with the solid_bulk EOS.
-core::MaterialSpec externalSteel() {
-  core::MaterialSpec steel;
-  steel.name = "steel";
-  steel.kind = core::MaterialKind::Solid;
-  steel.eos.type = "solid_bulk";
-  steel.eos.params = {{"bulk_modulus", 117e9}, {"threshold_pressure", 101325}, {"reference_density", 8900}};
-  steel.specific_heat = 450;
-  return steel;
-}
-}  // namespace
 
 // The coupling phases with an external (solid) material: the solid's cell state comes in before
 // the pressure, ICE returns the pressure force on it, takes its Lagrangian momentum and returns
@@ -163,7 +151,7 @@ TEST(IceExternal, CouplingPhasesWithASolidBlock) {
   s.name = "external";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  const core::MaterialSpec steel = externalSteel();
+  const core::MaterialSpec steel = test::externalSteel();
   s.materials = {test::idealGas("air"), steel};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2, {10, 0, 0})};
   ice::IceSolver sol(s, test::comm());
@@ -217,7 +205,7 @@ TEST(IceExternal, OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolum
   s.name = "overfull";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  const core::MaterialSpec steel = externalSteel();
+  const core::MaterialSpec steel = test::externalSteel();
   s.materials = {test::idealGas("air"), steel};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2)};
   ice::IceSolver sol(s, test::comm());
@@ -257,7 +245,7 @@ TEST(IceExchange, DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace) {
   s.name = "trace";
   s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {4, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  s.materials = {test::idealGas("air"), externalSteel()};
+  s.materials = {test::idealGas("air"), test::externalSteel()};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2, {1000, 0, 0})};
   s.ice.exchange_momentum = 1e15;
   ice::IceSolver sol(s, test::comm());
