@@ -59,9 +59,10 @@ inline constexpr double kPresentFraction = 1e-6;
 /// The largest relative volume change |dt (kappa_r / kbar) div U| of a material in one
 /// Lagrangian step (cap; capped cells are counted as fallbacks). No test pins it.
 inline constexpr double kMaxVolumeChange = 0.5;
-/// An energy update that would leave less than this share of a cell's internal energy is not
-/// taken (advection falls back to the directly advected internal energy, the Lagrangian energy
-/// fix keeps e_L). No test pins it.
+/// An energy update that would leave less than this share of a cell's thermal energy e - e_cold
+/// (cv T, eos.h) is not taken (advection falls back to the directly advected internal energy, the
+/// Lagrangian energy fix keeps e_L). Measured from e_cold, not from e = 0: a Mie-Gruneisen liquid
+/// with a reference temperature has e = 0 at T0 (slides_underwater_foam_water). No test pins the value.
 inline constexpr double kMinEnergyShare = 0.1;
 /// The semi-implicit step's speed floor, as a share of the sound speed, in the CFL bound.
 /// No test pins it (the semi-implicit IceSod and IceWaterAir runs take the step it gives, but

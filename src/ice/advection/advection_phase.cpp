@@ -8,7 +8,7 @@
 // donor-cell sum: uniform pressure and velocity stay uniform across material interfaces.
 // Donors whose outflows over all faces would exceed 90% of their mass have them scaled down
 // (positivity; conservative). Internal energy = total - kinetic; where round-off of that difference would lose more than 90%
-// of the internal energy advected directly (strong rarefactions), the direct value is used.
+// of the thermal energy (e - e_cold) advected directly (strong rarefactions), the direct value is used.
 #include <algorithm>
 #include <cmath>
 
@@ -239,6 +239,10 @@ void IceSolver::advectFluids() {
     double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
     const double *eL = m.eintL.data(), *vL = m.spvolL.data();
     const double* uL[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
+    // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
+    // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
+    const bool cold = m.eos->coldEnergy(1.0) != 0.0;
     for (const std::int64_t c : ownedCells_) {
       const double mass = a[kMass][c];
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
@@ -260,15 +264,6 @@ void IceSolver::advectFluids() {
         u[d][c] = ud;
         ke += ud * ud;
       }
-      const double eE = a[kEnergy][c] * inv - 0.5 * ke;
-      const double eA = a[kEint][c] * inv;
-      if (eA > 0 && eE < kMinEnergyShare * eA) {
-        e[c] = eA;
-        ++fallbacks_;
-        audit_.add(mass * (eA - eE), c, r);  // not conservative: the energy it adds is audited
-      } else {
-        e[c] = eE;
-      }
       ms[c] = mass;
       v[c] = a[kVolume][c] * inv;
       // The limited face volumes can drain more volume than a trace holds when its neighbours carry
@@ -277,6 +272,16 @@ void IceSolver::advectFluids() {
       if (!(v[c] > 0)) {
         v[c] = vL[c];
         ++fallbacks_;
+      }
+      const double eE = a[kEnergy][c] * inv - 0.5 * ke;
+      const double eA = a[kEint][c] * inv;
+      const double ec = cold ? m.eos->coldEnergy(1.0 / v[c]) : 0.0;
+      if (eA - ec > 0 && eE - ec < kMinEnergyShare * (eA - ec)) {
+        e[c] = eA;
+        ++fallbacks_;
+        audit_.add(mass * (eA - eE), c, r);  // not conservative: the energy it adds is audited
+      } else {
+        e[c] = eE;
       }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
     }

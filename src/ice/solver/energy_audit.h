@@ -2,8 +2,8 @@
 /// @brief The energy audit of ICE: what the non-conservative fallbacks of each step add.
 ///
 /// Mass, momentum and total energy move between cells in flux form, so they are conserved to
-/// round-off, except where a step falls back to a non-conservative update to keep the internal
-/// energy positive: advection taking the directly advected internal energy instead of
+/// round-off, except where a step falls back to a non-conservative update to keep the thermal
+/// energy e - e_cold (cv T) positive: advection taking the directly advected internal energy instead of
 /// E / m - |u|^2 / 2, and the Lagrangian energy correction not giving a material its share when
 /// that would drain it (docs/ice.md "Health check"). Each fallback's energy change m |e_taken -
 /// e_conservative| is added up here; the health check stops the run when the sum over the run

@@ -35,13 +35,16 @@ void IceSolver::computeSourcesAndLagrangian() {
     double cv;
     bool external;
     MaterialState* state;
+    const Eos* eos;
+    bool cold;  // the EOS has a cold energy (e - e_cold is the thermal energy the fix guards)
   };
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(),
               {m.vel.data(0), m.vel.data(1), m.vel.data(2)}, m.eint.data(),
-              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m};
+              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
+              m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
   const double* divU = st_.divU.data();
@@ -142,7 +145,10 @@ void IceSolver::computeSourcesAndLagrangian() {
         }
         const double e0 = P.eL[c];
         const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
-        if (e0 > 0 && e1 < kMinEnergyShare * e0) {  // would drain the internal energy: keep e0
+        // The thermal energy e - e_cold guards it (a Mie-Gruneisen liquid with a reference
+        // temperature T0 has e = 0 at T0: e < 0 is a state below T0, not below 0 K).
+        const double ec = P.cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0;
+        if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) {  // would drain it: keep e0
           ++fallbacks_;
           audit_.add(P.m[c] * (e0 - e1), c, r);  // the share of D not taken (audited)
         } else {
