@@ -19,9 +19,9 @@ const int kCells[5] = {100, 200, 400, 800, 1600};
 // contact < 1e-3 of the fastest wave speed.
 constexpr double kOvershoot = 2.0;
 constexpr double kContact = 1e-3;
-// Where 2 % is not met (docs/ice.md "Shocks", measured + ~10 %): test 3's density at 200 cells,
-// +3.03 % (an entropy deficit behind the shock, the pressure is +0.12 %).
-constexpr double kToro3Density200 = 3.4;
+// (Test 3's density at 200 cells was +3.03 %, an entropy deficit behind the shock, and held to
+// 3.4 % until the entropy-bounded face state of the advection, docs/ice.md "Shocks", fix 3:
+// now +0.36 %, under the common 2 %.)
 }  // namespace
 
 TEST(IceShockDefaults, ToroSuiteCompletesWithoutOvershootBehindTheShocks) {
@@ -32,7 +32,7 @@ TEST(IceShockDefaults, ToroSuiteCompletesWithoutOvershootBehindTheShocks) {
       ASSERT_TRUE(r.completed) << c.name << " " << n << ": " << r.error;
       std::printf("  %s %d cells: L1(rho) %.4e, overshoot rho %+.2f %% p %+.2f %%, contact |u - u*| %.1e of the wave speed\n",
                   c.name.c_str(), n, r.l1, r.overRho, r.overP, r.contactU);
-      EXPECT_LT(r.overRho, c.name == "toro3" && n == 200 ? kToro3Density200 : kOvershoot) << c.name << " " << n;
+      EXPECT_LT(r.overRho, kOvershoot) << c.name << " " << n;
       EXPECT_LT(r.overP, kOvershoot) << c.name << " " << n;
       if (c.name == "toro5") {
         EXPECT_LT(r.contactU, kContact) << n;  // the stationary contact
