@@ -9,8 +9,9 @@
 // Donors whose outflows over all faces would exceed 90% of their mass have them scaled down
 // (positivity; conservative). Internal energy = total - kinetic; where round-off of that difference would lose more than 90%
 // of the internal energy advected directly (strong rarefactions), the direct value is used.
-// Second order: the face's (specific volume, internal energy) pair is kept between the isentropes
-// of its two cells (entropy-bounded face state, below).
+// Second order with the Riemann face pressure: the face's (specific volume, internal energy) pair
+// is kept between the isentropes of its two cells where both hold the material alone
+// (entropy-bounded face state, below).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -233,7 +234,7 @@ void IceSolver::advectFluids() {
     // The isentrope fits of the entropy-bounded face state (second order; first order takes the
     // donor's own state, which is on its isentrope). Only with the Riemann face pressure: the
     // average face pressure (and coupled runs, which use it) has no dissipation at shocks, every
-    // shock rings there (+3 .. +65 %) and the bound cannot make up for it; with it, Toro's test 2
+    // shock rings there (up to +65 %) and the bound cannot make up for it; with it, Toro's test 2
     // with superbee and water against air with superbee stopped on a negative temperature
     // (docs/ice.md "The full sweep").
     const bool entropyBound = Second && riemannFacePressureOn();
