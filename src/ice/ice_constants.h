@@ -52,9 +52,12 @@ inline constexpr double kMaxOutflowFraction = 0.9;
 /// geometrically and would otherwise reach denormal numbers (two orders of magnitude slower).
 /// No test pins it.
 inline constexpr double kTinyVelocity = 1e-150;
-/// Volume fraction above which a material counts as present for the time step bounds (its speed
-/// in the CFL bound, its viscosity in the viscous bound). No test pins it (the IceTimeStep tests
-/// use cells one fluid fills).
+/// Volume fraction above which a material counts as present: for the time step bounds (its speed
+/// in the CFL bound, its viscosity in the viscous bound) and for the entropy-bounded face state
+/// of second-order advection, which acts only between cells where the other materials together
+/// are below it (single-fluid cells). The IceTimeStep tests use cells one fluid fills; with the
+/// entropy bound acting in mixed cells as well, IceWaterAir.RealDensityRatioCompletesAndConverges
+/// fails (400 cells: L1 5.759 > 5.75; docs/ice.md "Shocks", fix 3).
 inline constexpr double kPresentFraction = 1e-6;
 /// The largest relative volume change |dt (kappa_r / kbar) div U| of a material in one
 /// Lagrangian step (cap; capped cells are counted as fallbacks). No test pins it.

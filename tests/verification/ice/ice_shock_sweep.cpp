@@ -65,8 +65,10 @@ int main(int argc, char** argv) {
         std::printf("%-14s %5d cells: STOPPED (%s)\n", c.name.c_str(), n, r.error.c_str());
         continue;
       }
-      std::printf("%-14s %5d cells: L1(rho) %.4e  overshoot rho %+.2f %% p %+.2f %%  contact |u-u*|/speed %.1e  steps %ld  created energy %.1e\n",
+      std::printf("%-14s %5d cells: L1(rho) %.4e  overshoot rho %+.2f %% p %+.2f %%  contact |u-u*|/speed %.1e  steps %ld  created energy %.1e",
                   c.name.c_str(), n, r.l1, r.overRho, r.overP, r.contactU, r.steps, r.createdShare);
+      if (c.twoMaterials) std::printf("  shocked material's own rho %+.2f %%", r.overRhoOwn);
+      std::printf("\n");
       err.push_back(r.l1);
       ns.push_back(n);
     }

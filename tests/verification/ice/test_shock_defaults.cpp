@@ -3,7 +3,7 @@
 // sweep over every setting is scripts/ice_shock_sweep.sh, docs/ice.md "Shocks"): every run
 // completes through the health check, the overshoot behind each shock stays below 2 % of the jump,
 // test 5's stationary contact stays below 1e-3 of the wave speed, and L1(rho) falls with
-// refinement.
+// refinement; water against air at the real density ratio likewise (the air shock).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -19,9 +19,9 @@ const int kCells[5] = {100, 200, 400, 800, 1600};
 // contact < 1e-3 of the fastest wave speed.
 constexpr double kOvershoot = 2.0;
 constexpr double kContact = 1e-3;
-// Where 2 % is not met (docs/ice.md "Shocks", measured + ~10 %): test 3's density at 200 cells,
-// +3.03 % (an entropy deficit behind the shock, the pressure is +0.12 %).
-constexpr double kToro3Density200 = 3.4;
+// (Test 3's density at 200 cells was +3.03 %, an entropy deficit behind the shock, and held to
+// 3.4 % until the entropy-bounded face state of the advection, docs/ice.md "Shocks", fix 3:
+// now +0.36 %, under the common 2 %.)
 }  // namespace
 
 TEST(IceShockDefaults, ToroSuiteCompletesWithoutOvershootBehindTheShocks) {
@@ -32,7 +32,7 @@ TEST(IceShockDefaults, ToroSuiteCompletesWithoutOvershootBehindTheShocks) {
       ASSERT_TRUE(r.completed) << c.name << " " << n << ": " << r.error;
       std::printf("  %s %d cells: L1(rho) %.4e, overshoot rho %+.2f %% p %+.2f %%, contact |u - u*| %.1e of the wave speed\n",
                   c.name.c_str(), n, r.l1, r.overRho, r.overP, r.contactU);
-      EXPECT_LT(r.overRho, c.name == "toro3" && n == 200 ? kToro3Density200 : kOvershoot) << c.name << " " << n;
+      EXPECT_LT(r.overRho, kOvershoot) << c.name << " " << n;
       EXPECT_LT(r.overP, kOvershoot) << c.name << " " << n;
       if (c.name == "toro5") {
         EXPECT_LT(r.contactU, kContact) << n;  // the stationary contact
@@ -42,4 +42,27 @@ TEST(IceShockDefaults, ToroSuiteCompletesWithoutOvershootBehindTheShocks) {
     }
     for (std::size_t i = 1; i < err.size(); ++i) EXPECT_LT(err[i], err[i - 1]) << c.name;
   }
+}
+
+// Water against air at the real density ratio (the two-material case of the sweep) with the
+// default settings at 100..1600 cells: completes, and behind the air shock the air's own density
+// and the pressure stay below 2 % of the jump at every resolution. The mixture density is held to
+// the same 2 % from 200 cells; at 100 cells the air shock is 2-3 cells ahead of the smeared
+// contact and the measuring window holds water (+26.9 %, docs/ice.md "Traces").
+TEST(IceShockDefaults, WaterAirRealDensityWithoutOvershootBehindTheAirShock) {
+  const test::ShockCase c = test::waterAirRealDensity();
+  std::vector<double> err;
+  for (const int n : kCells) {
+    const test::ShockResult r = test::runShockCase(c, n, {});
+    ASSERT_TRUE(r.completed) << n << ": " << r.error;
+    std::printf("  %d cells: L1(rho) %.4e, overshoot air rho %+.2f %%, mixture rho %+.2f %%, p %+.2f %%\n", n, r.l1,
+                r.overRhoOwn, r.overRho, r.overP);
+    EXPECT_LT(r.overRhoOwn, kOvershoot) << n;
+    EXPECT_LT(r.overP, kOvershoot) << n;
+    if (n > 100) {
+      EXPECT_LT(r.overRho, kOvershoot) << n;
+    }
+    err.push_back(r.l1);  // (no p > 0: the water's start-up tension is admissible, docs/ice.md)
+  }
+  for (std::size_t i = 1; i < err.size(); ++i) EXPECT_LT(err[i], err[i - 1]);
 }
