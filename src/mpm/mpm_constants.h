@@ -37,6 +37,24 @@ inline constexpr double kReferenceTemperature = 300.0;
 /// run both launches with it.
 inline constexpr int kSortInterval = 20;
 
+// ---- time step ------------------------------------------------------------------------------------
+
+/// The largest CFL number MPM's step takes: the stable step is min(time.cfl, this) dx_min / max(c + |v|).
+/// The explicit step with FLIP / PIC transfers is not stable to CFL 1: the grid velocity a step
+/// hands on is the particles' re-projection (lumped^-1 consistent mass, eigenvalue a < 1 for the
+/// shortest modes), which moves the bound from dt c / dx <= 1 to <= 1 / sqrt(2 - a) ~ 0.71, and a
+/// node a free surface's particle barely reaches (GIMP, mass and stiffness ~ overlap^2) lowers it
+/// further. The linearised 1D step (free bar, FLIP, offsets 0-0.75 cell to the grid): GIMP 0.53 / 0.60 /
+/// 0.63 at 3 / 2 / 1 particles per cell, bspline2 0.74 (2 per cell), linear hats down to 0.44 at a
+/// free surface (unbounded as a surface particle's weight on a node -> 0: no cap holds it); the adiabatic
+/// piston (GIMP, 2 per cell) grows a sawtooth from CFL 0.67 (MPM alone) and 0.69 (coupled)
+/// (docs/mpm.md "The time step's limit"). 0.5 is below every GIMP and B-spline case; 2D / 3D were
+/// not analysed.
+/// Pinned by: tests/verification/coupled/test_piston.cpp, AdiabaticPiston.AtCfl07RunsWithinTheMpmStepsLimit
+/// (the piston at time.cfl 0.7 ends within the piston's bound), and
+/// tests/unit/mpm/test_solver_setup.cpp, TimeStep.CflAboveTheMpmLimitIsCapped.
+inline constexpr double kMaxStableCfl = 0.5;
+
 // ---- regularisation -----------------------------------------------------------------------------
 
 /// Mass floor of the grid, as a fraction of the smallest particle mass: a node (or cell) with less

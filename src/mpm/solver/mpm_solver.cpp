@@ -155,7 +155,9 @@ double MpmSolver::stableTimeStep(std::size_t* limiting) const {
   const double local = cmax;
   cmax = comm_.max(cmax);
   if (limiting) *limiting = local == cmax && cmax > 0 ? arg : p_.size();
-  double dt = cmax > 0 ? scene_.time.cfl * dxMin / cmax : scene_.time.dt_max;
+  // The CFL number the transfer scheme is stable at, at most (mpm_constants.h, kMaxStableCfl).
+  const double cfl = std::min(scene_.time.cfl, kMaxStableCfl);
+  double dt = cmax > 0 ? cfl * dxMin / cmax : scene_.time.dt_max;
   // Explicit damping v (1 - c dt): a step beyond 1 / c would reverse the velocity and, beyond
   // 2 / c, amplify it; the step keeps c dt <= 1.
   if (damping_ > 0) dt = std::min(dt, 1.0 / damping_);
@@ -184,7 +186,8 @@ std::string MpmSolver::stableTimeStepLimit() const {
   double x[3], v2 = 0;
   for (int d = 0; d < 3; ++d) x[d] = p_.x[d][i];
   for (int d = 0; d < mesh.dim(); ++d) v2 += p_.v[d][i] * p_.v[d][i];
-  os << "the MPM CFL bound cfl dx_min / (c + |v|) (dt " << dt << " s) at particle " << p_.id[i] << " of solid '"
+  os << "the MPM CFL bound min(time.cfl, " << kMaxStableCfl << ") dx_min / (c + |v|) (dt " << dt << " s) at particle "
+     << p_.id[i] << " of solid '"
      << scene_.materials[static_cast<std::size_t>(m)].name << "' at x = " << core::formatPoint(x, mesh.dim())
      << " m: wave speed c = " << models_[static_cast<std::size_t>(m)]->waveSpeed(p_.mass[i] / p_.vol[i])
      << " m/s, |v| = " << std::sqrt(v2) << " m/s, density " << p_.mass[i] / p_.vol[i] << " kg/m^3";

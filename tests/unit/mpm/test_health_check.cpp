@@ -83,6 +83,57 @@ TEST(MpmHealthCheck, AZeroVolumeIsNamed) {
   expectNames(healthMessage(s), {"volume [m^3] of solid 'block' = 0", where(s, 7)});
 }
 
+TEST(MpmHealthCheck, ANegativeVolumeIsNamedWithItsJacobian) {
+  MpmSolver s(blockScene(), self());
+  s.advance();
+  auto& p = s.particles();
+  p.vol[6] = -0.5 * p.vol0[6];
+  expectNames(healthMessage(s), {"volume [m^3] of solid 'block' = ", "J = det F = V / V0 = -0.5", where(s, 6)});
+}
+
+TEST(MpmHealthCheck, ANonFiniteStressWorkIsNamed) {
+  MpmSolver s(blockScene(), self());
+  s.advance();
+  s.particles().work[2] = std::numeric_limits<double>::infinity();
+  expectNames(healthMessage(s), {"stress work [J] of solid 'block' = inf", "expected finite", where(s, 2)});
+}
+
+TEST(MpmHealthCheck, ATemperatureAtZeroKelvinIsNamed) {
+  MpmSolver s(blockScene(), self());
+  s.advance();
+  s.particles().temperature[4] = -0.1;
+  expectNames(healthMessage(s), {"temperature [K] of solid 'block' = -0.1", "expected in (0, 1e9]", where(s, 4)});
+}
+
+// The stored stress work of a material may go below 0 by the time integration's error, at most
+// by its kinetic energy and the elastic energy of a 1 % strain; beyond, the run stops naming the
+// material's total and the particle holding the most negative work.
+TEST(MpmHealthCheck, StoredStressWorkFarBelowZeroStopsTheRunNamingTheMostNegativeParticle) {
+  MpmSolver s(blockScene(), self());
+  s.advance();
+  auto& p = s.particles();
+  const Energies e = s.energies();
+  const auto [b, end] = p.materialRange(0);
+  double mass = 0, rhoMin = 1e300;
+  for (std::size_t i = b; i < end; ++i) {
+    mass += p.mass[i];
+    rhoMin = std::min(rhoMin, p.mass[i] / p.vol[i]);
+  }
+  const double c = s.model(0).waveSpeed(rhoMin);
+  const double bound = e.kinetic + 0.5 * 1e-4 * mass * c * c;
+  // Within the bound: passes (a small negative book is a time-integration error, not a violation).
+  for (std::size_t i = b; i < end; ++i) p.work[i] = 0;
+  p.work[9] = -0.9 * bound;
+  EXPECT_EQ(healthMessage(s), "");
+  // Beyond it: stops.
+  p.work[9] = -1.1 * bound;
+  std::ostringstream total;
+  total.precision(6);
+  total << "of solid 'block' = " << -1.1 * bound << " over its " << end - b << " particles here";
+  expectNames(healthMessage(s), {"mpm: non-physical state: stored stress work [J] (elastic + dissipated)", total.str(),
+                                 "expected >= 0", "lower time.cfl", where(s, 9), "t = "});
+}
+
 TEST(MpmHealthCheck, ACollapsedTimeStepStopsTheRunNamingTheParticleAndTheLimit) {
   MpmSolver s(blockScene(), self());
   s.advance();  // the first stable step is the reference

@@ -77,6 +77,23 @@ TEST(TimeStep, FromCflAndWaveSpeed) {
   EXPECT_NEAR(solver.stableTimeStep(), 0.3 * 0.25 / c, 1e-12);
 }
 
+// The FLIP / PIC step is not stable to CFL 1 (mpm_constants.h, kMaxStableCfl): a CFL number above
+// the limit takes the limit's step, one below it its own.
+TEST(TimeStep, CflAboveTheMpmLimitIsCapped) {
+  auto s = blockScene();
+  const double E = 1e6, nu = 0.25, K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / 1000);
+  for (const double cfl : {0.7, 1.0}) {
+    s.time.cfl = cfl;
+    MpmSolver solver(s, self());
+    EXPECT_NEAR(solver.stableTimeStep(), 0.5 * 0.25 / c, 1e-12) << "cfl " << cfl;
+    EXPECT_NE(solver.stableTimeStepLimit().find("the MPM CFL bound min(time.cfl, 0.5)"), std::string::npos);
+  }
+  s.time.cfl = 0.45;
+  MpmSolver below(s, self());
+  EXPECT_NEAR(below.stableTimeStep(), 0.45 * 0.25 / c, 1e-12);
+}
+
 TEST(BoundaryConditions, FixedAndRoller) {
   core::Scene s = blockScene();
   s.boundary[0].type = core::BoundaryType::NoSlipWall;  // x-: fixed
