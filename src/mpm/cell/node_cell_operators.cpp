@@ -25,7 +25,8 @@ NodeCellOperators::NodeCellOperators(const core::Scene& scene, const core::Box& 
       pRef_(kReferencePressure),
       states_(scene.materials.size()),
       nodeMass_(scene.materials.size()),
-      deficit_(scene.materials.size()) {
+      deficit_(scene.materials.size()),
+      particleCells_(scene.materials.size()) {
   const std::vector<int> solids = scene.solids();
   if (!solids.empty()) pRef_ = scene.materials[solids.front()].eos.get("threshold_pressure", kReferencePressure);
 }
@@ -160,12 +161,20 @@ void NodeCellOperators::cellCouplingWork(int material, Field& out) const {
   });
 }
 
-void NodeCellOperators::sumParticleMassPerCell(std::size_t b, std::size_t e) {
-  cellMass_.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
+const NodeCellOperators::ParticleCells& NodeCellOperators::particleCells(int material) {
+  ParticleCells& pc = particleCells_.at(material);
+  if (pc.stamp == generation_) return pc;
+  const auto [b, e] = p_.materialRange(material);
+  pc.slot.resize(e - b);
+  pc.mass.assign(static_cast<std::size_t>(cells_.numPts()), 0.0);
   for (std::size_t i = b; i < e; ++i) {
     const auto c = cellOfParticle(mesh_, p_, i, cells_);
-    cellMass_[static_cast<std::size_t>(cells_.index(c[0], c[1], c[2]))] += p_.mass[i];
+    const auto s = cells_.index(c[0], c[1], c[2]);
+    pc.slot[i - b] = s;
+    pc.mass[static_cast<std::size_t>(s)] += p_.mass[i];
   }
+  pc.stamp = generation_;
+  return pc;
 }
 
 template <class F>
@@ -175,9 +184,16 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   Grid& g = grid_;
   const int dim = mesh_.dim();
   const auto [b, e] = p_.materialRange(material);
-  sumParticleMassPerCell(b, e);
-  auto slot = [&](const std::array<int, 3>& c) { return static_cast<std::size_t>(cells_.index(c[0], c[1], c[2])); };
+  const ParticleCells& pc = particleCells(material);
   g.remap.fill(0.0);
+  // Each cell's vector once (the particles of a cell read it), 0 where the solid is absent (no
+  // particle there reads it).
+  const double* cm = cs.mass.data();  // owned cells, no ghosts: flat index = cells_.index
+  cellVector_.resize(3 * static_cast<std::size_t>(cells_.numPts()));
+  core::forEach(cells_, [&](int i, int j, int k) {
+    const auto s = static_cast<std::size_t>(cells_.index(i, j, k));
+    for (int d = 0; d < 3; ++d) cellVector_[3 * s + d] = d < dim && cm[s] > massFloor_ ? cellVector(i, j, k, d) : 0.0;
+  });
   // Cells holding particles of m: each particle takes its mass share of its cell's vector and gives
   // it to its nodes with its own shape function (the weights of its particle-to-grid transfer).
   double* r[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
@@ -185,11 +201,11 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   kernels::dispatch(shape_, dim, [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = b; i < e; ++i) {
-      const auto c = cellOfParticle(mesh_, p_, i, cells_);
-      if (!(cs.mass(c[0], c[1], c[2]) > massFloor_)) continue;
-      const double share = p_.mass[i] / cellMass_[slot(c)];
+      const auto s = static_cast<std::size_t>(pc.slot[i - b]);
+      if (!(cm[s] > massFloor_)) continue;
+      const double share = p_.mass[i] / pc.mass[s];
       double v[3] = {0, 0, 0};
-      for (int d = 0; d < D; ++d) v[d] = share * cellVector(c[0], c[1], c[2], d);
+      for (int d = 0; d < D; ++d) v[d] = share * cellVector_[3 * s + d];
       st.compute(p_, i, geom);
       st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
         for (int d = 0; d < D; ++d) r[d][k] += w * v[d];
@@ -200,11 +216,12 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   // Cells the solid reaches through its nodes only (no particle inside): the corner nodes in
   // proportion to their mass of m (the transpose of the node-to-cell average).
   core::forEach(cells_, [&](int i, int j, int k) {
-    const double mc = cs.mass(i, j, k);
-    if (!(mc > massFloor_) || cellMass_[static_cast<std::size_t>(cells_.index(i, j, k))] > 0) return;
+    const auto s = static_cast<std::size_t>(cells_.index(i, j, k));
+    const double mc = cm[s];
+    if (!(mc > massFloor_) || pc.mass[s] > 0) return;
     forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
       const double w = share * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * cellVector(i, j, k, d);
+      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * cellVector_[3 * s + d];
     });
   });
 }
@@ -380,14 +397,15 @@ void NodeCellOperators::addRemapToExternalForce() {
   }
 }
 
-void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
+void NodeCellOperators::addCellEnergy(int material, const Field& energy) { addCellEnergy(material, {&energy}); }
+
+void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const Field*> energies) {
   const double cv = scene_.materials.at(material).specific_heat;
   const auto [b, e] = p_.materialRange(material);
   Grid& g = grid_;
-  if (nodeEnergy_.npts() == 0) {
-    nodeEnergy_ = Field("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
-    if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
-  }
+  if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
+  while (nodeEnergy_.size() < energies.size())
+    nodeEnergy_.emplace_back("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
   // Every cell's energy goes by the transpose of the node-to-cell average that made the cell mass
   // ICE saw: to its corner nodes in proportion to share x (their particle mass of m), and from a
   // node to its particles in proportion to m_p w_ip. So every joule reaches a particle, and a
@@ -396,10 +414,10 @@ void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
   // carries a small part of a smeared cell's mass many times its cell's change (the added-mass
   // slab's rubber at -640 K in step 1, the seed cylinder's wall at -0.03 K at K = 0).
   // 1. The particles' mass at each node, m_p w_ip summed as they are (no mirror images): the
-  //    weights of the deposit below, so that a node hands out exactly what it received.
+  //    weights of the deposit below, so that a node hands out exactly what it received. One pass
+  //    for all the fields (the particles do not move between them).
   Field& mw = nodeScratch_;
   mw.fill(0.0);
-  nodeEnergy_.fill(0.0);
   const GridGeom geom = g.geom();
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
@@ -412,29 +430,36 @@ void NodeCellOperators::addCellEnergy(int material, const Field& energy) {
   });
   g.sumAndFill({&mw});
   // 2. Each cell's energy to its corner nodes in proportion to their share of that mass.
-  core::forEach(cells_, [&](int i, int j, int k) {
-    const double E = energy(i, j, k);
-    if (E == 0.0) return;
-    double mc = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) { mc += share * mw(ni, nj, nk, 0); });
-    if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      nodeEnergy_(ni, nj, nk) += E * share * mw(ni, nj, nk, 0) / mc;
+  std::size_t f = 0;
+  for (const Field* energy : energies) {
+    Field& ne = nodeEnergy_[f++];
+    ne.fill(0.0);
+    core::forEach(cells_, [&](int i, int j, int k) {
+      const double E = (*energy)(i, j, k);
+      if (E == 0.0) return;
+      double mc = 0;
+      forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) { mc += share * mw(ni, nj, nk, 0); });
+      if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
+      forCellNodes(mesh_, i, j, k,
+                   [&](int ni, int nj, int nk, double share) { ne(ni, nj, nk) += E * share * mw(ni, nj, nk, 0) / mc; });
     });
-  });
-  g.sumAndFill({&nodeEnergy_});
-  // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i.
+    g.sumAndFill({&ne});
+  }
+  // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i, the fields in turn.
+  const std::size_t nf = energies.size();
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     const double* w = mw.data(0);
-    const double* en = nodeEnergy_.data();
     for (std::size_t i = b; i < e; ++i) {
       st.compute(p_, i, geom);
-      double q = 0;  // energy per unit mass of the particle
-      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
-        if (w[k] > 0) q += wk * en[k] / w[k];
-      });
-      p_.temperature[i] += q / cv;
+      for (std::size_t q = 0; q < nf; ++q) {
+        const double* en = nodeEnergy_[q].data();
+        double h = 0;  // energy per unit mass of the particle
+        st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
+          if (w[k] > 0) h += wk * en[k] / w[k];
+        });
+        p_.temperature[i] += h / cv;
+      }
     }
   });
 }

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "core/field/field.h"
@@ -150,6 +151,9 @@ class NodeCellOperators {
   /// it on) and a particle's temperature change is a weighted mean of its cells' dE / (m_c cv),
   /// never more (the cell mass ICE sees is smeared over the surface cells). Collective.
   void addCellEnergy(int material, const core::Field& energy);
+  /// The same for several fields at once (one pass over the particles for the node weights, one
+  /// for the deposit; each particle takes the fields' energies in their order, as calls in turn).
+  void addCellEnergy(int material, std::initializer_list<const core::Field*> energies);
 
  private:
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
@@ -157,8 +161,15 @@ class NodeCellOperators {
   /// nodeValue_ = (the average of the cells around each node of cellValue - offset, the sum of
   /// their shares): the first half of cellToParticles.
   void cellToNodes(const core::Field& cellValue, double offset);
-  /// cellMass_ = the mass of particles [b, e) in each owned cell.
-  void sumParticleMassPerCell(std::size_t b, std::size_t e);
+  /// The owned cell of each particle of material m and each owned cell's mass of them, for this
+  /// step generation (computed on the first call of the step: the particles move only in the
+  /// grid-to-particle pass, which ends the step).
+  struct ParticleCells {
+    std::uint64_t stamp = 0;
+    std::vector<std::int64_t> slot;  // per particle of m (from its range's start): cells_.index
+    std::vector<double> mass;        // per owned cell
+  };
+  const ParticleCells& particleCells(int material);
   /// Spreads per-cell vectors cellVector(i, j, k, d) of material m into the grid's remap field
   /// (not summed across ranks): see addCellForce.
   template <class F>
@@ -181,9 +192,11 @@ class NodeCellOperators {
   core::Field momentum_, volumeTemperature_;  // cellState() scratch (node momentum; V, m T)
   core::Field dv_;                             // applyCellMomentumIncrement() scratch
   core::Field nodeValue_;                      // cellToParticles() node value and weight
-  core::Field nodeScratch_, nodeEnergy_;       // applyCellMomentumIncrement(), addCellEnergy() scratch
+  core::Field nodeScratch_;                    // applyCellMomentumIncrement(), addCellEnergy() scratch
+  std::vector<core::Field> nodeEnergy_;        // addCellEnergy() scratch, one per field
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
-  std::vector<double> cellMass_;               // spreadCellVectors() scratch
+  std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
+  std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
 };
 
 }  // namespace mpmice::mpm

@@ -295,3 +295,34 @@ TEST(NodeCellOperators, UniformPressureStressIsASurfaceTraction) {
     for (double t : total) EXPECT_NEAR(t, 0.0, 1e-12 * largest) << shape;
   }
 }
+
+// addCellEnergy with several fields (one pass over the particles for the node weights, one for the
+// deposit: the coupled step hands the exchange heat and the kinetic deficit at once) gives every
+// particle the temperature of the calls in turn, bit for bit.
+TEST(NodeCellOperators, CellEnergyOfSeveralFieldsIsTheCallsInTurn) {
+  for (const char* shape : {"linear", "bspline2"})
+    for (int dim : {2, 3}) {
+      auto s = scene(dim);
+      s.mpm.shape_function = shape;
+      MpmSolver inTurn(s, self()), atOnce(s, self());
+      start(inTurn);
+      start(atOnce);
+      const core::Box owned = inTurn.decomposition().cellBox(0);
+      core::Field heat("heat", core::Centering::Cell, owned, 1, 0, 0.0), deficit = heat;
+      core::forEach(owned, [&](int i, int j, int k) {
+        heat(i, j, k) = 10.0 + 3.0 * i - 2.0 * j + k;  // every cell, the empty ones too
+        deficit(i, j, k) = 0.1 * std::sin(1.0 + i + 2.0 * j + 3.0 * k);
+      });
+      inTurn.cells().addCellEnergy(0, heat);
+      inTurn.cells().addCellEnergy(0, deficit);
+      atOnce.cells().addCellEnergy(0, {&heat, &deficit});
+      const auto &a = inTurn.particles(), &b = atOnce.particles();
+      ASSERT_EQ(a.size(), b.size());
+      std::size_t warmed = 0;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a.temperature[i], b.temperature[i]) << shape << " dim " << dim << " particle " << i;
+        warmed += a.temperature[i] != 350.0;
+      }
+      EXPECT_EQ(warmed, a.size()) << shape << " dim " << dim;
+    }
+}

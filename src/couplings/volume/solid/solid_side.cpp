@@ -38,8 +38,8 @@ void SolidSide::consumeDFinishStep() {
   mpm::NodeCellOperators& cells = mpm_.cells();
   for (auto& f : fields_) {
     cells.applyCellMomentumIncrement(f.material, f.exchangeMomentum);
-    cells.addCellEnergy(f.material, f.exchangeEnergy);
-    cells.addCellEnergy(f.material, cells.kineticDeficit(f.material));  // what the nodes did not take
+    // The exchange heat, then what the nodes did not take (one pass over the particles for both).
+    cells.addCellEnergy(f.material, {&f.exchangeEnergy, &cells.kineticDeficit(f.material)});
   }
   mpm_.gridToParticles();
   mpm_.endStep();
