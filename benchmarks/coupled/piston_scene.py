@@ -31,10 +31,10 @@ print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
 #   h' = -v,  M v' = -(p(h) - p_L(h)),  p = p0 (h0 / h)^gamma,  p_L = p0 (h_L0 / (h_L0 + h0 - h))^gamma,
 # M = 8900 x 0.4 kg/m^2 (for a constant v, p = p0 (h0 / (h0 - v t))^gamma). At t = 20 ms:
 # displacement 0.19639 m, v = 9.443 m/s, p = 260.78 kPa, p_L = 38.89 kPa.
-# Measured (docs/verification-coupled.md, tests/verification/coupled/test_piston.cpp): the
-# displacement within 0.2 %, the trapped gas's pressure within 4.0 % of p(t) at 25 cells (1.3 % to
-# t = 10 ms; not the 1 % asked: the gas advected across the piston's surface cells, see the docs);
-# 4.9 and 7.4 % at 50 and 100 cells.
+# Measured (docs/verification-coupled.md, tests/verification/coupled/test_piston.cpp), with
+# MPM's face transport of the piston's volume (coupling.solid_transport: mpm): the displacement
+# within 0.1 %, the trapped gas's pressure within 2.9 % of p(t) at 25 cells, 0.90 and 0.25 % at 50
+# and 100 cells (to 20 ms). With ICE's face fluxes (solid_transport: ice) 4.0-4.3, 4.9 and 7.4 %.
 #
 # Check it:  coupler check configs/piston.yaml
 # Run it:    mpmice configs/piston.yaml
@@ -100,6 +100,7 @@ ice:
 
 coupling:
   schedule: monolithic
+  solid_transport: mpm   # MPM's face transport of the piston's volume (docs/verification-coupled.md)
 
 output:
   directory: output/piston

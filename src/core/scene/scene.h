@@ -226,6 +226,10 @@ struct IceOptions {
   // Traces: a fluid below this fraction of a cell's fluid mass is held at its carried volume when
   // the cell's pressure is below its own (docs/ice.md "Traces"); 0 turns the rule off.
   double trace_mass_fraction = 1e-6;
+  // The equilibrium pressure's energies: "fixed_energy" (each material keeps its carried e while
+  // the solve moves volume between materials) or "with_work" (each fluid does the work p dv of its
+  // volume change, the fluids' energy conserved; docs/ice.md "Equilibrium with work").
+  std::string equilibrium = "fixed_energy";
   bool operator==(const IceOptions&) const = default;
 };
 
@@ -272,6 +276,10 @@ struct CouplingSpec {
   int mpm_ranks = 1, ice_ranks = 1;     // for `coupler run`
   FluidSolver fluid = FluidSolver::Ice;
   InterfaceSpec interface;              // fluid: openfoam (required there)
+  // How ICE's volume balance moves a solid's volume across cell faces: "ice" (ICE's face fluxes
+  // of the solid's cell fraction) or "mpm" (MPM's face transport of its node-to-cell average, the
+  // fluids locked to the solid only at faces inside it; docs/flap.md "Mixed cells").
+  std::string solid_transport = "ice";
   bool operator==(const CouplingSpec&) const = default;
 };
 

@@ -267,7 +267,8 @@ void options(std::ostream& o, const Scene& s) {
     << "\n  pressure_iterations: " << i.max_pressure_iterations << "\n  pressure_tolerance: "
     << num(i.pressure_tolerance) << "\n  shock_viscosity: {linear: " << num(i.shock_viscosity_linear)
     << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  face_pressure: " << i.face_pressure
-    << "\n  trace_mass_fraction: " << num(i.trace_mass_fraction) << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
+    << "\n  trace_mass_fraction: " << num(i.trace_mass_fraction) << "\n  equilibrium: " << i.equilibrium
+    << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
     << "\n    heat: " << num(i.exchange_heat) << "\n";
   if (!i.exchange_pairs.empty()) {
     o << "    pairs:\n";
@@ -279,7 +280,7 @@ void options(std::ostream& o, const Scene& s) {
   o << "coupling:\n  schedule: " << name(c.schedule) << "\n  fluid: " << name(c.fluid) << "\n  min_iterations: "
     << c.min_iterations << "\n  max_iterations: " << c.max_iterations << "\n  accept_unconverged: "
     << flag(c.accept_unconverged) << "\n  timeout: " << num(c.timeout) << "\n  ranks: {mpm: " << c.mpm_ranks
-    << ", ice: " << c.ice_ranks << "}\n";
+    << ", ice: " << c.ice_ranks << "}\n  solid_transport: " << c.solid_transport << "\n";
   if (!c.convergence.empty()) {
     o << "  convergence:\n";
     for (const auto& cv : c.convergence)

@@ -590,7 +590,7 @@ class SchemaReader {
     const YamlMap m = v.map();
     m.allow({"advection", "limiter", "pressure_solver", "linear_solver", "solver_tolerance",
              "solver_max_iterations", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
-             "face_pressure", "trace_mass_fraction"});
+             "face_pressure", "trace_mass_fraction", "equilibrium"});
     IceOptions& o = s_.ice;
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
@@ -602,6 +602,7 @@ class SchemaReader {
     o.pressure_tolerance = m.number("pressure_tolerance", o.pressure_tolerance, Range::positive());
     o.face_pressure = m.choice("face_pressure", o.face_pressure, {"riemann", "average"}, "face pressure");
     o.trace_mass_fraction = m.number("trace_mass_fraction", o.trace_mass_fraction, Range::closed(0, 0.01));
+    o.equilibrium = m.choice("equilibrium", o.equilibrium, {"fixed_energy", "with_work"}, "equilibrium pressure energies");
     if (const auto sv = m.get("shock_viscosity")) {
       const YamlMap q = sv->map();
       q.allow({"linear", "quadratic"});
@@ -637,7 +638,7 @@ class SchemaReader {
   void readCoupling(const YamlValue& v) {
     const YamlMap m = v.map();
     m.allow({"schedule", "fluid", "min_iterations", "max_iterations", "accept_unconverged", "timeout", "ranks",
-             "convergence", "acceleration", "interface"});
+             "convergence", "acceleration", "interface", "solid_transport"});
     CouplingSpec& c = s_.coupling;
     c.schedule = m.option("schedule", c.schedule, kScheduleNames, "coupling schedule");
     c.fluid = m.option("fluid", c.fluid, kFluidSolverNames, "fluid solver");
@@ -658,6 +659,9 @@ class SchemaReader {
     c.max_iterations = static_cast<int>(m.integer("max_iterations", c.max_iterations, c.min_iterations, kIntMax));
     c.accept_unconverged = m.boolean("accept_unconverged", c.accept_unconverged);
     c.timeout = m.number("timeout", c.timeout, Range::positive());  // [s]
+    // ice: ICE's face fluxes of the solid's cell fraction (the default); mpm: MPM sends, per cell
+    // face, the face transport of its node-to-cell average (docs/flap.md "Mixed cells").
+    c.solid_transport = m.choice("solid_transport", c.solid_transport, {"ice", "mpm"}, "solid transport");
     if (const auto r = m.get("ranks")) {
       const YamlMap ranks = r->map();
       ranks.allow({"mpm", "ice"});

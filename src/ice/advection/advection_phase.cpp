@@ -161,6 +161,7 @@ void IceSolver::advectFluids() {
         ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
                   m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
       }
+      const core::Field* solidFaces = st_.solidFaces.on ? &st_.solidFaces.cover[d] : nullptr;
       forEach(fb, [&](int i, int j, int k) {
         const std::int64_t fi = fb.index(i, j, k);
         const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
@@ -180,7 +181,10 @@ void IceSolver::advectFluids() {
           s2 += th2[r];
           fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
         }
-        const double scale = s2 > 0 ? s1 / s2 : 0.0;
+        // With the solids' face transport the fluids share the open part of the face, 1 - cover
+        // (solid_faces.h), as in the volume fluxes of the pressure.
+        const double target = solidFaces != nullptr && s1 > 0 ? 1.0 - solidFaces->data()[fi] : s1;
+        const double scale = s2 > 0 ? target / s2 : 0.0;
         const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
         const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
         for (int r = 0; r < nm; ++r) {

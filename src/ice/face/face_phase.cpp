@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ice/exchange/face_exchange.h"
+#include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
@@ -126,6 +127,7 @@ void IceSolver::computeFaceVelocities() {
       const double dpdx = (p[cR] - p[cL]) / dx;
       double x[kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
       faceMaterialValues(st_.mat, cL, cR, th, vf);
+      openSolidFaceExchange(st_, d, fi, th);
       // The two-shock Riemann solution's response of the face velocity to the pressure jump,
       // 1 / (W_L + W_R) (times dx: per unit gradient), at faces in compression (0 elsewhere).
       double riemann = 0;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
@@ -86,7 +87,26 @@ void IceSolver::computeEquilibriumPressure() {
   }
   // spvol holds each material's carried specific volume on entry (the trace rule reads it first).
   const std::vector<const double*> carried(rhoMicro.begin(), rhoMicro.end());
-  const auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data(), &carried);
+  // ice.equilibrium: with_work keeps the carried volumes, from which each fluid's work is measured.
+  std::vector<std::vector<double>> carriedCopy;
+  if (equilibriumWork_ && nm > 1)
+    for (const MaterialState& m : st_.mat) {
+      carriedCopy.emplace_back(ownedCells_.size());
+      for (std::size_t a = 0; a < ownedCells_.size(); ++a) carriedCopy.back()[a] = m.spvol.data()[ownedCells_[a]];
+    }
+  auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data(), &carried);
+  reportEquilibriumFailures(failures);
+  std::vector<std::pair<int, std::int64_t>> held = equil_->heldTraces(), cavitated = equil_->cavitated();
+  if (!carriedCopy.empty()) {
+    failures = equilibrateWithWork(rho, rhoMicro, carriedCopy, held, cavitated);
+    reportEquilibriumFailures(failures);
+  }
+  finishEquilibrium(held, cavitated);
+}
+
+void IceSolver::reportEquilibriumFailures(const std::vector<EquilibriumFailure>& failures) {
+  const int nm = numMaterials();
+  const double V = mesh_.cellVolume();
   const int anyFail = comm_.max(failures.empty() ? 0 : 1);
   if (anyFail) {
     std::ostringstream os;
@@ -134,6 +154,11 @@ void IceSolver::computeEquilibriumPressure() {
     }
     throw std::runtime_error(os.str());
   }
+}
+
+void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>>& held,
+                                  const std::vector<std::pair<int, std::int64_t>>& cavitated) {
+  const int nm = numMaterials();
   std::vector<double> ra, ea, c2;
   for (MaterialState& m : st_.mat) {
     double* th = m.theta.data();
@@ -162,18 +187,19 @@ void IceSolver::computeEquilibriumPressure() {
   }
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no
   // p dV work) in this step: it is incompressible below its own pressure.
-  for (const auto& [r, c] : equil_->heldTraces()) st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = 0.0;
+  for (const auto& [r, c] : held) st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = 0.0;
   // A cavitated liquid (docs/ice.md "Cavitation") is at its cut-off pressure at any density below
   // the law's there: zero sound speed, infinite compressibility. The cell's kbar is then infinite:
   // the pressure increment is 0 and the cavitated liquids take the cell's whole volume change
   // (computeSourcesAndLagrangian), so the pressure stays at the cut-off while the cavity opens or closes.
-  for (const auto& [r, c] : equil_->cavitated())
+  for (const auto& [r, c] : cavitated)
     st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
 
   double* pe = st_.pressEq.data();
   const double* p = st_.press.data();
   for (const std::int64_t c : ownedCells_) pe[c] = p[c];
   fillMaterialGhosts(false);
+  if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_);
 }
 
 void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned) {
@@ -188,12 +214,24 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
     const std::int64_t sd = strides[d];
     double* U = st.volFlux[d].data();
     for (std::size_t r = 0; r < nm; ++r) uf[r] = st.mat[r].velFace[d].data(), th[r] = st.mat[r].theta.data();
+    const SolidFaces& sf = st.solidFaces;
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       double f = 0;
-      for (std::size_t r = 0; r < nm; ++r) {
-        const double u = uf[r][fi];
-        f += u * th[r][u > 0 ? cL : cR];
+      if (sf.on) {  // the solids' own transport, the fluids through the open part of the face
+        double open = 0, S = 0;
+        for (std::size_t r = 0; r < nm; ++r) {
+          if (st.mat[r].external) continue;
+          const double u = uf[r][fi], t = th[r][u > 0 ? cL : cR];
+          open += u * t;
+          S += t;
+        }
+        f = sf.flux[d].data()[fi] + (S > 0 ? (1.0 - sf.cover[d].data()[fi]) * open / S : 0.0);
+      } else {
+        for (std::size_t r = 0; r < nm; ++r) {
+          const double u = uf[r][fi];
+          f += u * th[r][u > 0 ? cL : cR];
+        }
       }
       U[fi] = f;
     });

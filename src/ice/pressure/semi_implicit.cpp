@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "ice/exchange/face_exchange.h"
+#include "ice/face/solid_faces.h"
 #include "ice/linear/bicgstab.h"
 #include "ice/linear/hypre_struct_pcg.h"
 #include "ice/solver/ice_solver.h"
@@ -43,18 +44,27 @@ void IceSolver::assembleSemiImplicit() {
     const double dx2 = mesh_.dx(d) * mesh_.dx(d);
     const std::int64_t sd = strides[d];
     Field& coef = S.stencil.coef[d];
-    forEach(owned_.faces(d), [&](int i, int j, int k) {
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+    const core::Box fb = owned_.faces(d);
+    const SolidFaces& sf = st_.solidFaces;
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       double x[kMaxMaterials], th[kMaxMaterials];
       faceMaterialValues(st_.mat, cL, cR, th, x);
+      openSolidFaceExchange(st_, d, fi, th);
       if (exch) faceExchange(nm, dt, K_.data(), th, x, x);
-      double b = 0;
+      double b = 0, tsum = 0;
       for (int r = 0; r < nm; ++r) {
         const MaterialState& m = st_.mat[r];
         const double uf = m.velFace[d](i, j, k);
-        b += m.theta.data()[uf > 0 ? cL : cR] * x[r];
         S.mobility[r][d](i, j, k) = x[r];
+        // With the solids' face transport their volume flux does not answer to the pressure:
+        // the fluids' does, through the open part of the face (computeVolumeFluxes).
+        if (sf.on && m.external) continue;
+        const double t = m.theta.data()[uf > 0 ? cL : cR];
+        b += t * x[r];
+        tsum += t;
       }
+      if (sf.on) b = tsum > 0 ? (1.0 - sf.cover[d].data()[fi]) * b / tsum : 0.0;
       coef(i, j, k) = dt * dt * b / dx2;
     });
   }

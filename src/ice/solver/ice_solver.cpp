@@ -303,6 +303,28 @@ void IceSolver::setExternalMaterialState(int material, std::span<const double> m
   });
 }
 
+void IceSolver::setExternalFaceTransport(int material, std::span<const double> density, std::span<const double> flux) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (density.size() != 3 * n || flux.size() != 3 * n)
+    throw std::invalid_argument("ice: face transport of '" + m.name + "' has the wrong size (owned cells " +
+                                std::to_string(n) + ")");
+  if (m.faceDensity.npts() == 0) {
+    m.faceDensity = Field(m.name + "/face_density", core::Centering::Cell, st_.press.box(), 3, kGhost);
+    m.faceFlux = Field(m.name + "/face_flux", core::Centering::Cell, st_.press.box(), 3, kGhost);
+  }
+  forEach(owned_, [&](int i, int j, int k) {
+    const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
+    for (int d = 0; d < 3; ++d) {
+      m.faceDensity(i, j, k, d) = density[d * n + q];
+      m.faceFlux(i, j, k, d) = flux[d * n + q];
+    }
+  });
+  ghosts_->fill(std::vector<Field*>{&m.faceDensity, &m.faceFlux});
+  st_.solidFaces.on = true;
+}
+
 namespace {
 template <class State, class F>
 void forCheckpointFields(State& st, F&& f) {

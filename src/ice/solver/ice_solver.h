@@ -63,6 +63,11 @@ class IceSolver {
   // ---- phases (see the brief above)
   void setExternalMaterialState(int material, std::span<const double> mass, std::span<const double> velocity,
                                 std::span<const double> temperature, std::span<const double> specificVolume);
+  /// The face transport of external material m (coupling.solid_transport mpm; solid_faces.h): its
+  /// face density [kg/m^3] and face mass flux [kg/(m^2 s)] at the low face of each owned cell per
+  /// direction, 3 x owned cells each, component-major. Before computeEquilibriumPressure; from
+  /// the first call on, ICE's volume balance moves the solids' volume with it. Collective.
+  void setExternalFaceTransport(int material, std::span<const double> density, std::span<const double> flux);
   /// Once, at the start of a coupled run, after every external material's first state: scales
   /// each fluid's mass in every cell so that the fluids, at their initial micro state, fill
   /// exactly the volume the solids leave free (V - sum m_e v_e; a trace where the solids fill
@@ -168,6 +173,20 @@ class IceSolver {
   /// Phase 5, semi-implicit: assemble (face mobilities, the stencil, the right-hand side), solve
   /// for st_.dp (ice/linear), correct the face velocities.
   void solveSemiImplicit();
+  /// Phase 2's pieces (pressure_phase.cpp): a failed equilibrium pressure is an error naming the
+  /// cell, the materials and why (collective); theta, specific volume and kappa from the solved
+  /// state, the held traces and cavities given.
+  void reportEquilibriumFailures(const std::vector<EquilibriumFailure>& failures);
+  void finishEquilibrium(const std::vector<std::pair<int, std::int64_t>>& held,
+                         const std::vector<std::pair<int, std::int64_t>>& cavitated);
+  /// ice.equilibrium: with_work (equilibrium_work.cpp): each fluid of a mixed cell does the work
+  /// of its volume change at the cell's pressure, measured from its carried volume (per material,
+  /// per owned cell); the fluids' energy conserved. Updates held/cavitated to the final solve's.
+  std::vector<EquilibriumFailure> equilibrateWithWork(const std::vector<const double*>& rho,
+                                                      const std::vector<double*>& rhoMicro,
+                                                      const std::vector<std::vector<double>>& carried,
+                                                      std::vector<std::pair<int, std::int64_t>>& held,
+                                                      std::vector<std::pair<int, std::int64_t>>& cavitated);
   void assembleSemiImplicit();
   void solvePressureSystem();
 
@@ -183,6 +202,7 @@ class IceSolver {
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
   bool secondOrder_ = true, semiImplicit_ = false;
+  bool equilibriumWork_ = false;  // ice.equilibrium: with_work
   enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;
   std::string linearSolverName_ = "pfmg_pcg";
   int linIters_ = 0;

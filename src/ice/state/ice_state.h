@@ -36,6 +36,19 @@ struct MaterialState {
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
   core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
   core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)
+  // External materials with a face transport (coupling.solid_transport mpm): at the low face of
+  // each cell per direction, the face density [kg/m^3] and mass flux [kg/(m^2 s)] of the solid's
+  // smeared mass as its own solver moves it (3 components; stored with ghosts). Empty otherwise.
+  core::Field faceDensity, faceFlux;
+};
+
+/// The solids' face transport turned into ICE's face values (solid_faces.h), per direction on
+/// the faces of the owned cells; `on` with coupling.solid_transport mpm.
+struct SolidFaces {
+  bool on = false;
+  std::array<core::Field, 3> cover;    // fraction of the face the solids cover, in [0, kMaxSolidFraction]
+  std::array<core::Field, 3> flux;     // the solids' volume flux [m/s] (volume per face area and time)
+  std::array<core::Field, 3> inside;   // 1 where the face lies inside a solid (the fluids locked to it), else 0
 };
 
 struct IceState {
@@ -47,6 +60,7 @@ struct IceState {
   core::Field divU;       // div(sum_r theta_r u_f,r) per cell
   std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded; empty beyond dim)
   std::array<core::Field, 3> pressFace;  // empty beyond dim
+  SolidFaces solidFaces;
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`.
   void allocate(const core::Box& owned, const core::Box& stored, int dim);

@@ -154,6 +154,17 @@ class NodeCellOperators {
   /// The same for several fields at once (one pass over the particles for the node weights, one
   /// for the deposit; each particle takes the fields' energies in their order, as calls in turn).
   void addCellEnergy(int material, std::initializer_list<const core::Field*> energies);
+  /// The face transport of the node-to-cell average of material m's mass (solid_face_transport.cpp):
+  /// per cell face normal to d, at the low face of each owned cell (component d, 3 components),
+  /// the face density D_f = sum_p m_p H'_f(x_p,d) g_f(x_p) / A_f [kg/m^3] and the face mass flux
+  /// F_f = sum_p m_p v_p,d H'_f(x_p,d) g_f(x_p) / A_f [kg/(m^2 s)]. H_f(x) is the share of a
+  /// particle at x that the node-to-cell average gives to the cells above face f in d, g_f its
+  /// share in the face's row of cells in the other directions, A_f the face area. So the rate of
+  /// change of a cell's mass as the particles move at v_p is exactly the flux F into it through
+  /// its faces less the flux out (uniform interior; the mirror images at walls are left out), and
+  /// D_f times the solid's specific volume is the fraction of the face the smeared solid covers
+  /// (1 inside a uniform solid). Collective.
+  void solidFaceTransport(int material, core::Field& density, core::Field& flux);
 
  private:
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
@@ -197,6 +208,7 @@ class NodeCellOperators {
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
   std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
+  core::Field faceTransport_;                  // solidFaceTransport() node-indexed faces (D, F per d)
 };
 
 }  // namespace mpmice::mpm

@@ -31,11 +31,13 @@ TEST(ExchangeDeclaration, SeedCylinderMovesTwoComponentsOfEachVectorInTwoDimensi
   EXPECT_EQ(FieldUses::everything(1).valuesPerCell(), 18);
 }
 
+// The flap's scene also moves its volume with MPM's face transport (coupling.solid_transport:
+// mpm): the face density and flux, dim components each, with the solid state.
 TEST(ExchangeDeclaration, FlapWithHeatExchangeMovesTheExchangeEnergy) {
   const core::Scene scene = core::loadScene(FLAP_MPMICE);
   const FieldUses travel = agree(scene, solidDeclaration(scene), fluidDeclaration(scene));
   EXPECT_EQ(lists(travel, scene),
-            "flap: mass velocity(2) temperature specific_volume\n"
+            "flap: mass velocity(2) temperature specific_volume face_density(2) face_flux(2)\n"
             "flap: pressure_force(2) pressure\n"
             "flap: lagrangian_momentum(2) coupling_work\n"
             "flap: exchange_momentum(2) exchange_energy\n");

@@ -326,3 +326,49 @@ TEST(NodeCellOperators, CellEnergyOfSeveralFieldsIsTheCallsInTurn) {
       EXPECT_EQ(warmed, a.size()) << shape << " dim " << dim;
     }
 }
+
+// solidFaceTransport: the face fluxes of the node-to-cell average. Moving every particle by
+// kU eps changes each cell's mass by eps times the face flux into it less the flux out (checked
+// by the difference of two particle-to-grid passes, for each shape and dimension), and the face
+// density and flux integrate, over the faces normal to d times dx_d, to the mass and the momentum.
+TEST(NodeCellOperators, FaceTransportIsTheCellMassChange) {
+  for (const char* shape : {"linear", "gimp", "bspline2"})
+    for (int dim : {2, 3}) {
+      core::Scene sc = scene(dim);
+      sc.mpm.shape_function = shape;
+      MpmSolver solver(sc, self());
+      start(solver);
+      const core::Mesh& mesh = solver.scene().mesh;
+      const core::Box cells = solver.cells().cellState(0).mass.box();
+      core::Field D("density", core::Centering::Cell, cells, 3, 0), F("flux", core::Centering::Cell, cells, 3, 0);
+      solver.cells().solidFaceTransport(0, D, F);
+      const core::Field m0 = solver.cells().cellState(0).mass;
+      auto& p = solver.particles();
+      double mass = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) mass += p.mass[i];
+      const double V = mesh.cellVolume();
+      for (int d = 0; d < dim; ++d) {
+        EXPECT_NEAR(sum(D, d) * V, mass, 1e-12 * mass) << shape << " " << dim << "D, d = " << d;
+        EXPECT_NEAR(sum(F, d) * V, mass * kU[d], 1e-12 * mass) << shape << " " << dim << "D, d = " << d;
+      }
+      const double eps = 1e-6;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        for (int d = 0; d < dim; ++d) p.x[d][i] += eps * kU[d];
+      solver.beginStep(solver.stableTimeStep());
+      solver.particlesToGrid();
+      const core::Field& m1 = solver.cells().cellState(0).mass;
+      double worst = 0;
+      core::forEach(cells, [&](int i, int j, int k) {
+        double inflow = 0;
+        for (int d = 0; d < dim; ++d) {
+          int h[3] = {i, j, k};
+          h[d] += 1;
+          const double A = V / mesh.dx(d);
+          const double out = cells.contains(h[0], h[1], h[2]) ? F(h[0], h[1], h[2], d) : 0.0;
+          inflow += A * (F(i, j, k, d) - out);
+        }
+        worst = std::max(worst, std::abs((m1(i, j, k) - m0(i, j, k)) / eps - inflow));
+      });
+      EXPECT_LT(worst, 1e-5 * mass) << shape << " " << dim << "D";
+    }
+}

@@ -55,6 +55,7 @@ inline core::Scene shockCaseScene(const ShockCase& c, int n, const TubeOptions& 
   s.ice.pressure_solver = o.pressure;
   s.ice.limiter = o.limiter;
   s.ice.face_pressure = o.facePressure;
+  s.ice.equilibrium = o.equilibrium;
   // ICE_TRACE_MASS_FRACTION (the sweep's --trace-mass-fraction): ice.trace_mass_fraction.
   if (const char* y = std::getenv("ICE_TRACE_MASS_FRACTION")) s.ice.trace_mass_fraction = std::atof(y);
   return s;

@@ -3,7 +3,7 @@
 // solution, the fitted order, the overshoot behind each shock (% of the jump) and the stationary
 // contact's velocity. scripts/ice_shock_sweep.sh runs it for every setting (docs/ice.md).
 //   ice_shock_sweep [--advection A] [--limiter L] [--pressure P] [--face-pressure riemann|average]
-//                   [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air]
+//                   [--equilibrium fixed_energy|with_work] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     else if (k == "--cfl") o.cfl = std::atof(v.c_str());
     else if (k == "--cases") cases = v;
     else if (k == "--face-pressure") o.facePressure = v;
+    else if (k == "--equilibrium") o.equilibrium = v;
     else if (k == "--trace-mass-fraction") setenv("ICE_TRACE_MASS_FRACTION", v.c_str(), 1);  // water_air only
     else if (k == "--cells") {
       cells.clear();
@@ -48,8 +49,8 @@ int main(int argc, char** argv) {
   }
   core::MpiSession mpi(argc, argv);
   g_comm = mpi.world();
-  std::printf("setting: %s %s %s face_pressure %s cfl %.2f\n", o.advection.c_str(), o.limiter.c_str(), o.pressure.c_str(),
-              o.facePressure.c_str(), o.cfl);
+  std::printf("setting: %s %s %s face_pressure %s equilibrium %s cfl %.2f\n", o.advection.c_str(), o.limiter.c_str(),
+              o.pressure.c_str(), o.facePressure.c_str(), o.equilibrium.c_str(), o.cfl);
   std::vector<test::ShockCase> list;
   // "toro": Sod and Toro 1-5; otherwise the named cases (sod, toro1 .. toro5, water_air).
   for (const auto& c : test::toroCases())

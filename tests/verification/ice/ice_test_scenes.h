@@ -71,6 +71,7 @@ inline core::RegionSpec region(const std::string& name, core::ShapeSpec shape, s
 
 struct TubeOptions {
   std::string advection = "second_order", pressure = "explicit", limiter = "van_leer", facePressure = "riemann";
+  std::string equilibrium = "fixed_energy";  // ice.equilibrium
   double cfl = 0.4;
 };
 
@@ -90,6 +91,7 @@ inline core::Scene shockTube(int n, Primitive L, Primitive R, double x0, double 
   s.ice.pressure_solver = o.pressure;
   s.ice.limiter = o.limiter;
   s.ice.face_pressure = o.facePressure;
+  s.ice.equilibrium = o.equilibrium;
   return s;
 }
 

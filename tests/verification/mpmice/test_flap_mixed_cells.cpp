@@ -10,10 +10,11 @@
 //  - the heat the mixed cells create at the flap's surface (the flap takes it: heat exchange
 //    1e15) stays below what the flow dissipates: (p_in - p_out) Q t, the mechanical energy the
 //    channel's fixed inflow and outflow pressures take from the flow (130 Pa x 40 m^2/s x t).
-// Measured on main (4c8cc7e), dx = 0.1, t = 0.3 s (this test): tip ux 0.1262 m at 1 atm, 0.0984 m
-// at 10 atm (22 % lower); flap heat +570 J and +1463 J against the flow's 1560 J (docs/flap.md).
-// The ambient-pressure test is DISABLED_ (it fails on main and on this branch: the defect is
-// found, not fixed); the heat test passes on main and guards the bound.
+// The scene moves the solid's volume with MPM's face transport (coupling.solid_transport: mpm,
+// src/ice/face/solid_faces.h). Measured (this test, dx = 0.1, t = 0.3 s): tip ux 0.14048 m at
+// 1 atm, 0.14159 m at 10 atm (+0.79 %); flap heat +112 J and +100 J against the flow's 1560 J.
+// With ICE's face fluxes of the smeared fraction (solid_transport: ice, main 4c8cc7e) it was
+// 0.1262 m against 0.0984 m (-22 %) and +570 J / +1463 J (docs/flap.md "Mixed cells").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -140,9 +141,15 @@ TEST(FlapMixedCells, SurfaceMakesLessHeatThanTheFlowDissipates) {
   EXPECT_LT(std::abs(ten.flapHeat), dissipation) << "10 atm: heat created at the surface";
 }
 
-// Not asserted yet: the tip at 10 atm within 3 % of the tip at 1 atm (issue 14). Today 0.1262 m
-// at 1 atm against 0.0984 m at 10 atm (-22 %, printed by runs()): the gas trapped in the mixed
-// cells is compressed as the node-to-cell average moves the flap's mass into them, with a
-// stiffness gamma p (docs/flap.md "Mixed cells"). The bound becomes a test with the fix.
+// The tip at 10 atm within 3 % of the tip at 1 atm (issue 14): a uniform pressure level is no
+// load. Measured +0.79 % (0.14159 against 0.14048 m). With ICE's face fluxes of the smeared
+// fraction (solid_transport: ice) -22 %: the gas in the mixed cells was squeezed by the solid
+// volume the node-to-cell average moved into them, with the stiffness gamma p.
+TEST(FlapMixedCells, AmbientPressureDoesNotMoveTheFlap) {
+  const auto& [one, ten] = runs();
+  ASSERT_GT(one.tipUx, 0.05) << "the flap bends downstream by t = 0.3 s";
+  EXPECT_LT(std::abs(ten.tipUx - one.tipUx), 0.03 * one.tipUx)
+      << "tip ux at 10 atm " << ten.tipUx << " m against " << one.tipUx << " m at 1 atm";
+}
 
 }  // namespace

@@ -16,7 +16,7 @@ struct PointFields {
 // The fields of each point in wire order, as SolidExchangeFields::at lists them.
 const PointFields& fieldsOf(ExchangePoint p) {
   static const std::array<PointFields, 4> table{
-      PointFields{{"mass", "velocity", "temperature", "specific_volume"}, {1, 3, 1, 1}},
+      PointFields{{"mass", "velocity", "temperature", "specific_volume", "face_density", "face_flux"}, {1, 3, 1, 1, 3, 3}},
       PointFields{{"pressure_force", "pressure"}, {3, 1}},
       PointFields{{"lagrangian_momentum", "coupling_work"}, {3, 1}},
       PointFields{{"exchange_momentum", "exchange_energy"}, {3, 1}}};
@@ -51,6 +51,13 @@ bool exchanges(const core::Scene& s, int m, bool heat) {
   return false;
 }
 
+/// The solid state's components: the face transport (dim components each) only with
+/// coupling.solid_transport mpm.
+std::vector<int> solidStateComponents(const core::Scene& s) {
+  const int dim = s.mesh.dim(), faces = s.coupling.solid_transport == "mpm" ? dim : 0;
+  return {1, dim, 1, 1, faces, faces};
+}
+
 void setAll(FieldUses& u, ExchangePoint p, const std::vector<int>& components) {
   for (auto& slot : u.at[index(p)]) slot = components;
 }
@@ -68,6 +75,7 @@ long FieldUses::valuesPerCell() const {
 FieldUses FieldUses::everything(std::size_t solids) {
   FieldUses u = none(solids);
   for (ExchangePoint p : kExchangePoints) setAll(u, p, fieldsOf(p).components);
+  setAll(u, ExchangePoint::SolidState, {1, 3, 1, 1, 0, 0});  // the face transport came with the declarations
   return u;
 }
 
@@ -75,7 +83,7 @@ ExchangeDeclaration solidDeclaration(const core::Scene& scene) {
   const std::vector<int> solids = scene.solids();
   const int dim = scene.mesh.dim();
   ExchangeDeclaration d{none(solids.size()), none(solids.size())};
-  setAll(d.writes, ExchangePoint::SolidState, {1, dim, 1, 1});
+  setAll(d.writes, ExchangePoint::SolidState, solidStateComponents(scene));
   setAll(d.writes, ExchangePoint::LagrangianMomentum, {dim, 1});
   const bool dragOrHeat = exchanges(scene, -1, false) || exchanges(scene, -1, true);
   for (std::size_t s = 0; s < solids.size(); ++s) {
@@ -90,7 +98,7 @@ ExchangeDeclaration fluidDeclaration(const core::Scene& scene) {
   const std::size_t solids = scene.solids().size();
   const int dim = scene.mesh.dim();
   ExchangeDeclaration d{none(solids), none(solids)};
-  setAll(d.reads, ExchangePoint::SolidState, {1, dim, 1, 1});
+  setAll(d.reads, ExchangePoint::SolidState, solidStateComponents(scene));
   setAll(d.reads, ExchangePoint::LagrangianMomentum, {dim, 1});
   setAll(d.writes, ExchangePoint::PressureForce, {dim, 1});
   setAll(d.writes, ExchangePoint::ExchangeIncrements, {dim, 1});

@@ -10,6 +10,8 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       velocity(n + "/velocity", core::Centering::Cell, owned, 3, 0),
       temperature(n + "/temperature", core::Centering::Cell, owned, 1, 0),
       specificVolume(n + "/specific_volume", core::Centering::Cell, owned, 1, 0),
+      faceDensity(n + "/face_density", core::Centering::Cell, owned, 3, 0),
+      faceFlux(n + "/face_flux", core::Centering::Cell, owned, 3, 0),
       pressureForce(n + "/pressure_force", core::Centering::Cell, owned, 3, 0),
       pressure(n + "/pressure", core::Centering::Cell, owned, 1, 0),
       lagrangianMomentum(n + "/lagrangian_momentum", core::Centering::Cell, owned, 3, 0),
@@ -33,7 +35,7 @@ const char* describe(ExchangePoint p) {
 
 std::vector<core::Field*> SolidExchangeFields::at(ExchangePoint p) {
   switch (p) {
-    case ExchangePoint::SolidState: return {&mass, &velocity, &temperature, &specificVolume};
+    case ExchangePoint::SolidState: return {&mass, &velocity, &temperature, &specificVolume, &faceDensity, &faceFlux};
     case ExchangePoint::PressureForce: return {&pressureForce, &pressure};
     case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum, &couplingWork};
     case ExchangePoint::ExchangeIncrements: return {&exchangeMomentum, &exchangeEnergy};

@@ -4,7 +4,10 @@
 ///
 ///   exchange point         direction        fields                                      after
 ///   SolidState             solid -> fluid   mass, velocity (3), temperature,            particle-to-grid
-///                                           specific volume
+///                                           specific volume, and with coupling.solid_transport
+///                                           mpm the face transport of the solid's mass at each
+///                                           cell's low face per direction: face density (3)
+///                                           [kg/m^3] and face mass flux (3) [kg/(m^2 s)]
 ///   PressureForce          fluid -> solid   pressure force on the solid (3) [N],       the face pressure
 ///                                           cell pressure [Pa]
 ///   LagrangianMomentum     solid -> fluid   Lagrangian momentum of the solid (3)        the grid update
@@ -40,6 +43,7 @@ struct SolidExchangeFields {
   int material = -1;           // scene index of the solid
   std::string name;
   core::Field mass, velocity, temperature, specificVolume;  // SolidState
+  core::Field faceDensity, faceFlux;                         // SolidState (solid_transport mpm)
   core::Field pressureForce, pressure;                      // PressureForce
   core::Field lagrangianMomentum, couplingWork;             // LagrangianMomentum
   core::Field exchangeMomentum, exchangeEnergy;             // ExchangeIncrements

@@ -2,15 +2,14 @@
 
 namespace mpmice::coupler {
 
-FluidSide::FluidSide(ice::IceSolver& ice, const core::Scene& scene) : ice_(ice) {
+FluidSide::FluidSide(ice::IceSolver& ice, const core::Scene& scene)
+    : ice_(ice), faceTransport_(scene.coupling.solid_transport == "mpm") {
   for (int m : scene.solids()) fields_.emplace_back(m, scene.materials[m].name, ice.ownedBox());
 }
 
 void FluidSide::consumeAProduceB(double dt) {
   if (!started_) start();
-  for (auto& f : fields_)
-    ice_.setExternalMaterialState(f.material, all(f.mass), all(f.velocity), all(f.temperature),
-                                  all(f.specificVolume));
+  setSolidStates();
   ice_.computeEquilibriumPressure();
   ice_.beginStep(dt);
   ice_.computeFaceVelocities();
@@ -37,10 +36,16 @@ void FluidSide::consumeCProduceD() {
 
 void FluidSide::finishStep() { ice_.advectFluids(); }
 
-void FluidSide::start() {
-  for (auto& f : fields_)
+void FluidSide::setSolidStates() {
+  for (auto& f : fields_) {
     ice_.setExternalMaterialState(f.material, all(f.mass), all(f.velocity), all(f.temperature),
                                   all(f.specificVolume));
+    if (faceTransport_) ice_.setExternalFaceTransport(f.material, all(f.faceDensity), all(f.faceFlux));
+  }
+}
+
+void FluidSide::start() {
+  setSolidStates();
   ice_.fitFluidsToExternalVolume();
   started_ = true;
 }

@@ -53,7 +53,11 @@ class FluidSide {
   static std::span<const double> all(const core::Field& f) {
     return {f.data(), static_cast<std::size_t>(f.npts() * f.ncomp())};
   }
+  /// Every solid's cell state (and face transport) into ICE.
+  void setSolidStates();
+
   ice::IceSolver& ice_;
+  bool faceTransport_;  // coupling.solid_transport mpm: the solid state carries the face transport
   std::vector<SolidExchangeFields> fields_;
   bool started_ = false;  // the first step fits the fluids to the solids' volume
 };

@@ -2,7 +2,8 @@
 
 namespace mpmice::coupler {
 
-SolidSide::SolidSide(mpm::MpmSolver& mpm) : mpm_(mpm) {
+SolidSide::SolidSide(mpm::MpmSolver& mpm)
+    : mpm_(mpm), faceTransport_(mpm.scene().coupling.solid_transport == "mpm") {
   mpm_.useGridStressWorkByDefault();  // mpm.stress_work auto: the energy budget closes
   const core::Box owned = mpm.decomposition().cellBox(mpm.comm().rank());
   for (int m : mpm.scene().solids()) fields_.emplace_back(m, mpm.scene().materials[m].name, owned);
@@ -19,6 +20,7 @@ void SolidSide::produceA() {
     f.velocity.copyRegion(s.velocity, b, b);
     f.temperature.copyRegion(s.temperature, b, b);
     f.specificVolume.copyRegion(s.specificVolume, b, b);
+    if (faceTransport_) mpm_.cells().solidFaceTransport(f.material, f.faceDensity, f.faceFlux);
   }
 }
 

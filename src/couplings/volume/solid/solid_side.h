@@ -50,6 +50,7 @@ class SolidSide {
 
  private:
   mpm::MpmSolver& mpm_;
+  bool faceTransport_;  // coupling.solid_transport mpm: the solid state carries the face transport
   std::vector<SolidExchangeFields> fields_;
 };
 

@@ -1,0 +1,65 @@
+#include "ice/face/solid_faces.h"
+
+#include <algorithm>
+
+#include "ice/ice_constants.h"
+
+namespace mpmice::ice {
+
+using core::forEach;
+
+namespace {
+constexpr double kCoverTolerance = 1e-9;  // relative, of the face cover comparisons
+}  // namespace
+
+void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& owned) {
+  SolidFaces& sf = st.solidFaces;
+  const int dim = mesh.dim();
+  const core::Box domain = mesh.cellBox();
+  const core::Box& sb = st.press.box();
+  for (int d = 0; d < dim; ++d) {
+    const core::Box fb = owned.faces(d);
+    if (sf.cover[d].npts() == 0) {
+      sf.cover[d] = core::Field("solid_face_cover", core::Centering::Cell, fb, 1, 0);
+      sf.flux[d] = core::Field("solid_face_flux", core::Centering::Cell, fb, 1, 0);
+      sf.inside[d] = core::Field("solid_face_inside", core::Centering::Cell, fb, 1, 0);
+    }
+    // Cover and volume flux of the low face of stored cell (i, j, k) in d (0 on the domain's
+    // boundary faces and beyond them).
+    auto faceValues = [&](int i, int j, int k, double& cover, double& flux) {
+      cover = flux = 0;
+      const int idx[3] = {i, j, k};
+      if (idx[d] <= domain.lo[d] || idx[d] > domain.hi[d]) return;
+      int l[3] = {i, j, k};
+      l[d] -= 1;
+      if (!sb.contains(i, j, k) || !sb.contains(l[0], l[1], l[2])) return;
+      for (const MaterialState& m : st.mat) {
+        if (!m.external || m.faceDensity.npts() == 0) continue;
+        const double v = faceSpecificVolume(m.mass(l[0], l[1], l[2]), m.spvol(l[0], l[1], l[2]), m.mass(i, j, k),
+                                            m.spvol(i, j, k));
+        cover += m.faceDensity(i, j, k, d) * v;
+        flux += m.faceFlux(i, j, k, d) * v;
+      }
+      cover = std::clamp(cover, 0.0, kMaxSolidFraction);
+    };
+    forEach(fb, [&](int i, int j, int k) {
+      double c, q, cLo, cHi, dummy;
+      faceValues(i, j, k, c, q);
+      int lo[3] = {i, j, k}, hi[3] = {i, j, k};
+      lo[d] -= 1;
+      hi[d] += 1;
+      faceValues(lo[0], lo[1], lo[2], cLo, dummy);
+      faceValues(hi[0], hi[1], hi[2], cHi, dummy);
+      sf.cover[d](i, j, k) = c;
+      sf.flux[d](i, j, k) = q;
+      // A relative tolerance on the comparisons: a uniform solid's plateau, or the half-covered
+      // face of a solid one cell thick, must not flip with the round-off of the sums (the order
+      // of the particles' and the ranks' contributions).
+      const double cUp = c * (1 + kCoverTolerance);
+      sf.inside[d](i, j, k) =
+          cUp >= 0.5 || (c > kPresentFraction && cUp >= cLo && cUp >= cHi) ? 1.0 : 0.0;
+    });
+  }
+}
+
+}  // namespace mpmice::ice
