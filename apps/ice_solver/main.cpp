@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const std::exception& e) {  // may be one rank only (a coupling timeout): end the launch
     core::writeErrorLine("ice_solver", e.what());
+    if (session.world().size() == 1) return 1;  // alone: no peer to wake (MPI_Abort would add Open MPI's noise)
     core::MpiSession::abortAll(1);
   }
   return 0;

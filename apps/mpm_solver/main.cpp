@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& ex) {  // may be one rank only (a coupling timeout): end the launch
     core::writeErrorLine("mpm_solver", ex.what());
     std::fflush(stderr);
+    if (session.world().size() == 1) return 1;  // alone: no peer to wake (MPI_Abort would add Open MPI's noise)
     core::MpiSession::abortAll(1);
   }
   return 0;

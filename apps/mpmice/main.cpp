@@ -50,7 +50,10 @@ int main(int argc, char** argv) {
     if (comm.root()) core::writeErrorLine("mpmice", e.what());
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "mpmice: " << e.what() << "\n";
+    core::writeErrorLine("mpmice", e.what());
+    // One rank has no peer to wake: end with status 1 (MPI_Abort in a process started without
+    // mpirun makes Open MPI print an error of its own after the message).
+    if (comm.size() == 1) return 1;
     core::MpiSession::abortAll(1);
   }
 }
