@@ -146,21 +146,6 @@ void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) const {
   });
 }
 
-void NodeCellOperators::cellCouplingWork(int material, Field& out) const {
-  current(material, "cellCouplingWork");
-  const Field& nm = nodeMass_[material];
-  const Field& gm = grid_.mass;
-  const Field& w = grid_.externalWork;
-  core::forEach(cells_, [&](int i, int j, int k) {
-    double W = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double m = gm(ni, nj, nk);
-      if (m > 0) W += share * nm(ni, nj, nk) / m * w(ni, nj, nk);
-    });
-    out(i, j, k) = W;
-  });
-}
-
 const NodeCellOperators::ParticleCells& NodeCellOperators::particleCells(int material) {
   ParticleCells& pc = particleCells_.at(material);
   if (pc.stamp == generation_) return pc;
@@ -268,25 +253,27 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
   });
   nodeScratch_.copyRegion(vL, vL.box(), vL.box());
   applyCellVelocityIncrement(material, dv_);
-  // Less what the nodes gained: each node's kinetic energy change, node-to-cell averaged.
-  const Field& gm = grid_.mass;
-  core::forEach(cells_, [&](int i, int j, int k) {
-    double got = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      double dk = 0;
-      for (int d = 0; d < dim; ++d) {
-        const double a = nodeScratch_(ni, nj, nk, d), b = vL(ni, nj, nk, d);
-        dk += (b - a) * (b + a);
-      }
-      got += share * 0.5 * gm(ni, nj, nk) * dk;
-    });
-    def(i, j, k) -= got;
-  });
+  // Less what the nodes gained, booked to the cell each increment came from: a node's kinetic
+  // energy change is its momentum increments times its mean velocity (v_old + v_new) / 2, each
+  // increment followed from its cell (cell_coupling_work.cpp; cellVector_ holds the cells' m dv as
+  // spread). Node-to-cell averaging the nodes' changes instead moved the energy of one cell's
+  // increment into its neighbours (a crushing foam's top particles cooled 2 K a step by it).
+  meanNodeVelocity(nodeScratch_, vL, massFloor_, nodeScratch_);
+  if (gotScratch_.npts() == 0) gotScratch_ = Field("kinetic_got", Centering::Cell, cells_, 1, 0);
+  gotScratch_.fill(0.0);
+  addCellVectorPower(material, cellVector_, nodeScratch_, -1.0, gotScratch_);
+  core::forEach(cells_, [&](int i, int j, int k) { def(i, j, k) += gotScratch_(i, j, k); });
 }
 
 void NodeCellOperators::addCellForce(int material, const Field& force) {
   current(material, "addCellForce");
   spreadCellVectors(material, [&](int i, int j, int k, int d) { return force(i, j, k, d); });
+  if (cellForce_.size() <= static_cast<std::size_t>(material)) {
+    cellForce_.resize(static_cast<std::size_t>(material) + 1);
+    cellForceStamp_.resize(static_cast<std::size_t>(material) + 1, 0);
+  }
+  cellForce_[static_cast<std::size_t>(material)] = cellVector_;  // for cellCouplingWork
+  cellForceStamp_[static_cast<std::size_t>(material)] = generation_;
   addRemapToExternalForce();
 }
 
@@ -342,6 +329,8 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   const double* nm = g.mass.data();
   double h = mesh_.dx(0);
   for (int d = 1; d < mesh_.dim(); ++d) h = std::min(h, mesh_.dx(d));
+  stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
+  stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = 0; i < p_.size(); ++i) {
@@ -375,6 +364,8 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       double n[3] = {0, 0, 0};
       if (gn > 0)
         for (int d = 0; d < 3; ++d) n[d] = G[d] / gn;
+      double* sf = &stressForce_[5 * i];
+      sf[0] = V * iso, sf[1] = V * ex, sf[2] = n[0], sf[3] = n[1], sf[4] = n[2];
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
         const double gg[3] = {gx, gy, gz};
         double ng = 0;

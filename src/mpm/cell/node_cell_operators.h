@@ -14,9 +14,11 @@
 ///   addCellForce(m, F)              a cell force to the particles of m in the cell (mass shares),
 ///                                   each to its nodes with its own shape function
 ///   cellLagrangianMomentum(m, out)  the node-to-cell average of m v_L
-///   cellCouplingWork(m, out)        the work the coupling forces did on the nodes, per cell
+///   cellCouplingWork(m, out, dt)    the work the coupling forces did on the nodes, booked to the
+///                                   cell each force came from (cell_coupling_work.cpp)
 ///   applyCellMomentumIncrement(m)   the exchange momentum / cell mass, spread to the nodes; the
-///                                   kinetic energy the nodes did not take (kineticDeficit(m))
+///                                   kinetic energy the nodes did not take (kineticDeficit(m)),
+///                                   booked to the cell each increment came from
 ///   addCellEnergy(m, E)             heat to the particles, by the transpose of the node-to-cell
 ///                                   average (every joule reaches a particle, none gets more)
 ///
@@ -101,7 +103,16 @@ class NodeCellOperators {
   /// Per-cell work [J] of the coupling forces (the grid's externalForce) on the nodes in this
   /// step's grid update (Grid::externalWork), node-to-cell averaged and shared among the solids in
   /// proportion to their node mass: sums over the cells to the nodes' total (after updateGrid).
-  void cellCouplingWork(int material, core::Field& out) const;
+  /// The work [J] the coupling forces of this step (addCellForce, addCellPressureStress) did on
+  /// material m, per owned cell, booked to the cell the force came from (cell_coupling_work.cpp):
+  /// each particle's share of its cell's pressure force and its mean-stress force, times the
+  /// mean node velocity (v + v_L) / 2 at its stencil nodes, dt times; a cell without particles
+  /// of m, its force on the corner nodes. Summed over cells and materials it is the nodes' work
+  /// sum_i dt f_i . (v_i + v_L,i) / 2 that the grid update realised. After updateGrid.
+  void cellCouplingWork(int material, core::Field& out, double dt);
+  /// The node mass below which the grid update does not accelerate a node (and the coupling
+  /// forces do no work there): MpmSolver's floor.
+  void setWorkMassFloor(double floor) { workFloor_ = floor; }
   /// Adds per-cell velocity increments of material m (owned cells) to the Lagrangian node velocity:
   /// the momentum m_cell dv spread as addCellForce spreads a force. Collective.
   void applyCellVelocityIncrement(int material, const core::Field& dv);
@@ -187,6 +198,15 @@ class NodeCellOperators {
   void spreadCellVectors(int material, F&& cellVector);
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
+  /// out = (a + b) / 2 at the nodes whose mass is above floor, 0 elsewhere, the mirror images
+  /// beyond symmetry planes filled (the velocity a folded node force meets): cell_coupling_work.cpp.
+  void meanNodeVelocity(const core::Field& a, const core::Field& b, double floor, core::Field& out) const;
+  /// Adds scale x the power of the cell vectors vec (3 per owned cell, as spreadCellVectors spread
+  /// them for material m) against the node velocity vbar, booked to the cell each vector came
+  /// from: sum_{p in c} (m_p / M_c) vec_c . sum_i w_ip vbar_i, or for a cell without particles of
+  /// m its corner nodes' share: cell_coupling_work.cpp.
+  void addCellVectorPower(int material, const std::vector<double>& vec, const core::Field& vbar, double scale,
+                          core::Field& out);
 
   const core::Scene& scene_;
   const core::Mesh& mesh_;
@@ -201,7 +221,7 @@ class NodeCellOperators {
   std::vector<SolidCellState> states_;    // per scene material (allocated on first use)
   std::vector<core::Field> nodeMass_;     // node mass of each material (behind its cell state)
   core::Field momentum_, volumeTemperature_;  // cellState() scratch (node momentum; V, m T)
-  core::Field dv_;                             // applyCellMomentumIncrement() scratch
+  core::Field dv_, gotScratch_;                // applyCellMomentumIncrement() scratch
   core::Field nodeValue_;                      // cellToParticles() node value and weight
   core::Field nodeScratch_;                    // applyCellMomentumIncrement(), addCellEnergy() scratch
   std::vector<core::Field> nodeEnergy_;        // addCellEnergy() scratch, one per field
@@ -209,6 +229,12 @@ class NodeCellOperators {
   std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
   core::Field faceTransport_;                  // solidFaceTransport() node-indexed faces (D, F per d)
+  // cellCouplingWork(): the forces of this step as they were spread (stamp: the generation).
+  std::vector<std::vector<double>> cellForce_;   // per material: addCellForce()'s cell vectors (3 per owned cell)
+  std::vector<std::uint64_t> cellForceStamp_;
+  std::vector<double> stressForce_;              // per particle: V iso, V ex, n (addCellPressureStress)
+  std::uint64_t stressForceStamp_ = 0;
+  double workFloor_ = 0;
 };
 
 }  // namespace mpmice::mpm

@@ -89,6 +89,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   accelFloor_ = shape_ == ShapeKind::Linear ? kSmallMassFraction * comm_.min(minMass) : massFloor_;
   cells_ = std::make_unique<NodeCellOperators>(scene_, decomp_.cellBox(comm_.rank()), *grid_, bcs_, p_, shape_,
                                                massFloor_);
+  cells_->setWorkMassFloor(accelFloor_);
   nodeWeight_.assign(static_cast<std::size_t>(grid_->numNodes()), 0.0);
   {
     const GridGeom geom = grid_->geom();

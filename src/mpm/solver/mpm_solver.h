@@ -129,6 +129,8 @@ class MpmSolver {
 
   // ---- phases (see the brief) ----------------------------------------------------------------
   void beginStep(double dt);
+  /// The step begun by beginStep (0 before the first).
+  [[nodiscard]] double stepSize() const { return dt_; }
   void particlesToGrid();
   /// Cell-centred state of solid material m: cells().cellState(m).
   const SolidCellState& cellState(int material) { return cells_->cellState(material); }

@@ -372,3 +372,88 @@ TEST(NodeCellOperators, FaceTransportIsTheCellMassChange) {
       EXPECT_LT(worst, 1e-5 * mass) << shape << " " << dim << "D";
     }
 }
+
+// The coupling work (cell_coupling_work.cpp) is booked to the cell the force came from: a force in
+// one cell of the block does work in that cell only (booking the nodes' work by the node-to-cell
+// average put it into the 8 / 26 cells around as well), and summed over the cells it is the work
+// the grid update did, sum_i dt f_i . (v_n + v_L) / 2 (Grid::externalWork). The same for the
+// mean-stress force of a pressure jump, whose work sums to the nodes' too.
+TEST(NodeCellOperators, CouplingWorkIsBookedToTheCellTheForceCameFrom) {
+  for (int dim : {2, 3}) {
+    MpmSolver solver(scene(dim), self());
+    start(solver);
+    NodeCellOperators& ops = solver.cells();
+    const SolidCellState& cs = ops.cellState(0);
+    solver.computeInternalForces();
+    core::Field f("force", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+    const int ci = 3, cj = 2, ck = dim == 3 ? 2 : 0;  // inside the block (cells 2..4 x 2..3 x 2..3)
+    f(ci, cj, ck, 0) = 40.0;
+    f(ci, cj, ck, 1) = -25.0;
+    ops.addCellForce(0, f);
+    solver.updateGrid();
+    core::Field W("work", core::Centering::Cell, cs.mass.box(), 1, 0, 0.0);
+    ops.cellCouplingWork(0, W, solver.stepSize());
+    const double nodes = sum(solver.grid().externalWork);
+    EXPECT_GT(std::abs(nodes), 0.0) << dim;
+    EXPECT_NEAR(sum(W), nodes, 1e-12 * std::abs(nodes)) << dim;
+    core::forEach(W.box(), [&](int i, int j, int k) {
+      if (i != ci || j != cj || k != ck) {
+        EXPECT_EQ(W(i, j, k), 0.0) << dim << " cell " << i << "," << j << "," << k;
+      }
+    });
+  }
+  // The mean-stress force of a pressure that rises across the block (its work is the particles').
+  MpmSolver solver(scene(2), self());
+  start(solver);
+  NodeCellOperators& ops = solver.cells();
+  const SolidCellState& cs = ops.cellState(0);
+  solver.computeInternalForces();
+  core::Field p("pressure", core::Centering::Cell, cs.mass.box(), 1, 0, 0.0);
+  core::forEach(p.box(), [&](int i, int j, int k) { p(i, j, k) = 1e5 + 2e4 * i + 5e3 * j; });
+  ops.addCellPressureStress(p);
+  solver.updateGrid();
+  core::Field W("work", core::Centering::Cell, cs.mass.box(), 1, 0, 0.0);
+  ops.cellCouplingWork(0, W, solver.stepSize());
+  const double nodes = sum(solver.grid().externalWork);
+  EXPECT_GT(std::abs(nodes), 0.0);
+  EXPECT_NEAR(sum(W), nodes, 1e-12 * std::abs(nodes));
+}
+
+// The kinetic deficit of a momentum increment (applyCellMomentumIncrement) is booked to the cell
+// the increment came from: zero in every other cell (the nodes' gain node-to-cell averaged put a
+// negative deficit into the cells around it), and in that cell what the cell's view charged,
+// dp . (u_L + dv / 2), less the kinetic energy all the nodes gained.
+TEST(NodeCellOperators, KineticDeficitIsBookedToTheCellTheIncrementCameFrom) {
+  for (int dim : {2, 3}) {
+    MpmSolver solver(scene(dim), self());
+    start(solver);
+    NodeCellOperators& ops = solver.cells();
+    const SolidCellState& cs = ops.cellState(0);
+    solver.computeInternalForces();
+    solver.updateGrid();
+    core::Field pL("pL", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+    ops.cellLagrangianMomentum(0, pL);
+    const core::Field vOld = solver.grid().velocityL;
+    core::Field dp("dp", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+    const int ci = 3, cj = 2, ck = dim == 3 ? 2 : 0;
+    const double m = cs.mass(ci, cj, ck);
+    dp(ci, cj, ck, 0) = 0.2 * m;
+    dp(ci, cj, ck, 1) = -0.1 * m;
+    ops.applyCellMomentumIncrement(0, dp);
+    const core::Field& def = ops.kineticDeficit(0);
+    core::forEach(def.box(), [&](int i, int j, int k) {
+      if (i != ci || j != cj || k != ck) {
+        EXPECT_EQ(def(i, j, k), 0.0) << dim << " cell " << i << "," << j << "," << k;
+      }
+    });
+    double gain = 0, nodes = 0;
+    for (int d = 0; d < dim; ++d) gain += dp(ci, cj, ck, d) * (pL(ci, cj, ck, d) / m + 0.5 * dp(ci, cj, ck, d) / m);
+    const Grid& g = solver.grid();
+    for (std::int64_t k = 0; k < g.numNodes(); ++k)
+      for (int d = 0; d < dim; ++d) {
+        const double a = vOld.data(d)[k], b = g.velocityL.data(d)[k];
+        nodes += 0.5 * g.mass.data()[k] * (b * b - a * a);
+      }
+    EXPECT_NEAR(def(ci, cj, ck), gain - nodes, 1e-12 * std::abs(gain)) << dim;
+  }
+}
