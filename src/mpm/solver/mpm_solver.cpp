@@ -501,8 +501,9 @@ void MpmSolver::updateGrid() {
   }
   applyBC(g.velocityL);
   // The work of the coupling forces, as the update realised it (a constrained component moves
-  // neither at n nor at L, so it does none): the kinetic energy the coupler must take from the
-  // fluid (NodeCellOperators::cellCouplingWork).
+  // neither at n nor at L, so it does none), for the energy ledger below; the coupler books the
+  // same work to the cells the forces came from (NodeCellOperators::cellCouplingWork, with this
+  // floor) and takes it from the fluid there.
   // The ledger: the nodes' kinetic energy change less the coupling and damping work is the
   // internal forces' (with the walls' constraints), to be met by the particles' stress work.
   double* w = g.externalWork.data();
