@@ -8,6 +8,11 @@ Field::Field(std::string name, Centering c, const Box& stored, int ncomp, int ng
     : name_(std::move(name)), centering_(c), box_(stored), ncomp_(ncomp), nghost_(nghost),
       npts_(stored.numPts()), data_(static_cast<std::size_t>(stored.numPts() * ncomp), init) {
   if (ncomp < 1) throw std::invalid_argument("Field '" + name_ + "': ncomp must be >= 1");
+  if (stored.ok()) {
+    sy_ = stored.length(0);
+    sz_ = sy_ * stored.length(1);
+    origin_ = -(stored.lo[0] + sy_ * stored.lo[1] + sz_ * stored.lo[2]);
+  }
 }
 
 View Field::view(int c) {

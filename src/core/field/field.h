@@ -50,11 +50,16 @@ class Field {
   [[nodiscard]] ConstView view(int c = 0) const;
   double& operator()(int i, int j, int k, int c = 0) {
     assert(box_.contains(i, j, k));
-    return data_[c * npts_ + box_.index(i, j, k)];
+    return data_[static_cast<std::size_t>(offset(i, j, k, c))];
   }
   double operator()(int i, int j, int k, int c = 0) const {
     assert(box_.contains(i, j, k));
-    return data_[c * npts_ + box_.index(i, j, k)];
+    return data_[static_cast<std::size_t>(offset(i, j, k, c))];
+  }
+  /// Flat offset of (i, j, k), component c, in the storage: c npts + box().index(i, j, k), from
+  /// strides kept at construction (Box::index recomputes the lengths with their validity tests).
+  [[nodiscard]] std::int64_t offset(int i, int j, int k, int c = 0) const {
+    return origin_ + c * npts_ + i + sy_ * j + sz_ * k;
   }
   void fill(double v) { data_.assign(data_.size(), v); }
   void fill(double v, int c);
@@ -71,6 +76,7 @@ class Field {
   Box box_;
   int ncomp_ = 0, nghost_ = 0;
   std::int64_t npts_ = 0;
+  std::int64_t sy_ = 0, sz_ = 0, origin_ = 0;  // offset = origin + c npts + i + sy j + sz k
   std::vector<double> data_;
 };
 
