@@ -10,7 +10,7 @@ a study may vary `mesh.cells` or `mesh.spacing` on configs/piston.yaml directly.
 """
 import sys
 
-n = int(sys.argv[1]) if len(sys.argv) > 1 else 25
+n = int(sys.argv[1]) if len(sys.argv) > 1 else 50
 t_end = float(sys.argv[2]) if len(sys.argv) > 2 else 0.02
 L, xl, xr, v = 1.0, 0.2, 0.6, 10.0
 dx = L / n
@@ -32,9 +32,10 @@ print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
 # M = 8900 x 0.4 kg/m^2 (for a constant v, p = p0 (h0 / (h0 - v t))^gamma). At t = 20 ms:
 # displacement 0.19639 m, v = 9.443 m/s, p = 260.78 kPa, p_L = 38.89 kPa.
 # Measured (docs/verification-coupled.md, tests/verification/coupled/test_piston.cpp), with
-# MPM's face transport of the piston's volume (coupling.solid_transport: mpm): the displacement
-# within 0.1 %, the trapped gas's pressure within 2.9 % of p(t) at 25 cells, 0.90 and 0.25 % at 50
-# and 100 cells (to 20 ms). With ICE's face fluxes (solid_transport: ice) 4.0-4.3, 4.9 and 7.4 %.
+# MPM's face transport of the piston's volume (coupling.solid_transport: mpm), to 20 ms: the
+# trapped gas's pressure within 0.89 % of p(t) at 50 cells (the shipped scene), 2.89 % at 25,
+# 0.24 % at 100, 0.06 % at 200 (order 1.95); the displacement within 0.1 %. With ICE's face
+# fluxes (solid_transport: ice) 4.0-4.3, 4.9 and 7.4 % at 25, 50, 100 cells.
 #
 # Check it:  coupler check configs/piston.yaml
 # Run it:    mpmice configs/piston.yaml
