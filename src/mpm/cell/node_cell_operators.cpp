@@ -31,6 +31,28 @@ NodeCellOperators::NodeCellOperators(const core::Scene& scene, const core::Box& 
   if (!solids.empty()) pRef_ = scene.materials[solids.front()].eos.get("threshold_pressure", kReferencePressure);
 }
 
+CellCorners::CellCorners(const core::Mesh& mesh, const core::Box& nodes) : nodes_(nodes) {
+  const int dim = mesh.dim();
+  nc_ = 1 << dim;
+  sy_ = nodes.length(0);
+  sz_ = sy_ * nodes.length(1);
+  origin_ = -(nodes.lo[0] + sy_ * nodes.lo[1] + sz_ * nodes.lo[2]);
+  for (int c = 0; c < nc_; ++c)
+    off_[c] = (c & 1) + (dim > 1 ? sy_ * ((c >> 1) & 1) : 0) + (dim > 2 ? sz_ * ((c >> 2) & 1) : 0);
+  share_.resize(static_cast<std::size_t>(nodes.numPts()));
+  core::forEach(nodes, [&](int i, int j, int k) {
+    share_[static_cast<std::size_t>(nodes.index(i, j, k))] = nodeShare(mesh, i, j, k);
+  });
+}
+
+const CellCorners& NodeCellOperators::corners(const Field& f, const char* what) {
+  if (!corners_.nodes().ok()) corners_ = CellCorners(mesh_, grid_.box());
+  if (!(f.box() == corners_.nodes()))
+    throw std::logic_error(std::string("NodeCellOperators::") + what + ": node field '" + f.name() + "' is stored on " +
+                           f.box().str() + ", not on the grid's node box " + corners_.nodes().str());
+  return corners_;
+}
+
 const SolidCellState& NodeCellOperators::current(int material, const char* op) const {
   const SolidCellState& cs = states_.at(material);
   if (cs.stamp != generation_) {
@@ -105,13 +127,20 @@ const SolidCellState& NodeCellOperators::cellState(int material) {
   // zero): the reference specific volume and, as its neighbours' temperature is not known here,
   // the reference temperature.
   const double v0 = 1.0 / scene_.materials[material].density;
+  const CellCorners& cc = corners(nm, "cellState");
+  corners(mom, "cellState");
+  corners(vt, "cellState");
+  const double* nmd = nm.data();
+  const double* momd[3] = {mom.data(0), mom.data(1), mom.data(2)};
+  const double* vol = vt.data(0);
+  const double* mtd = vt.data(1);
   core::forEach(cells_, [&](int i, int j, int k) {
     double m = 0, p[3] = {0, 0, 0}, V = 0, MT = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double w) {
-      m += w * nm(ni, nj, nk);
-      for (int d = 0; d < 3; ++d) p[d] += w * mom(ni, nj, nk, d);
-      V += w * vt(ni, nj, nk, 0);
-      MT += w * vt(ni, nj, nk, 1);
+    cc.forCorners(i, j, k, [&](std::int64_t n, double w) {
+      m += w * nmd[n];
+      for (int d = 0; d < 3; ++d) p[d] += w * momd[d][n];
+      V += w * vol[n];
+      MT += w * mtd[n];
     });
     const bool massive = m > massFloor_;
     const double T = massive ? MT / m : 0.0, v = massive ? V / m : 0.0;
@@ -132,15 +161,19 @@ const SolidCellState& NodeCellOperators::cellState(int material) {
   return cs;
 }
 
-void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) const {
+void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) {
   current(material, "cellLagrangianMomentum");
   const Field& nm = nodeMass_[material];
   const Field& vL = grid_.velocityL;
+  const CellCorners& cc = corners(nm, "cellLagrangianMomentum");
+  corners(vL, "cellLagrangianMomentum");
+  const double* nmd = nm.data();
+  const double* vLd[3] = {vL.data(0), vL.data(1), vL.data(2)};
   core::forEach(cells_, [&](int i, int j, int k) {
     double p[3] = {0, 0, 0};
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk);
-      for (int d = 0; d < 3; ++d) p[d] += w * vL(ni, nj, nk, d);
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      const double w = share * nmd[n];
+      for (int d = 0; d < 3; ++d) p[d] += w * vLd[d][n];
     });
     for (int d = 0; d < 3; ++d) out(i, j, k, d) = p[d];
   });
@@ -238,11 +271,15 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
   const Field& vL = grid_.velocityL;
   const int dim = mesh_.dim();
   // What the cell gains at its Lagrangian velocity (ICE's exchange counts this).
+  const CellCorners& cc = corners(nm, "applyCellMomentumIncrement");
+  corners(vL, "applyCellMomentumIncrement");
+  const double* nmd = nm.data();
+  const double* vLd[3] = {vL.data(0), vL.data(1), vL.data(2)};
   core::forEach(cells_, [&](int i, int j, int k) {
     const double m = cs.mass(i, j, k);
     double p[3] = {0, 0, 0};
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      for (int d = 0; d < dim; ++d) p[d] += share * nm(ni, nj, nk) * vL(ni, nj, nk, d);
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      for (int d = 0; d < dim; ++d) p[d] += share * nmd[n] * vLd[d][n];
     });
     double gain = 0;
     for (int d = 0; d < 3; ++d) {
@@ -307,11 +344,14 @@ void NodeCellOperators::cellToNodes(const Field& cellValue, double offset) {
   // mesh node; component 1 keeps that sum, so nodes outside the mesh, which no cell reaches,
   // carry weight 0 and drop out of the particle interpolation).
   nodeValue_.fill(0.0);
+  const CellCorners& cc = corners(nodeValue_, "cellToNodes");
+  double* nv = nodeValue_.data(0);
+  double* nw = nodeValue_.data(1);
   core::forEach(cells_, [&](int i, int j, int k) {
     const double v = cellValue(i, j, k) - offset;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      nodeValue_(ni, nj, nk, 0) += share * v;
-      nodeValue_(ni, nj, nk, 1) += share;
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      nv[n] += share * v;
+      nw[n] += share;
     });
   });
   g.sumAndFill({&nodeValue_});
@@ -422,17 +462,20 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   g.sumAndFill({&mw});
   // 2. Each cell's energy to its corner nodes in proportion to their share of that mass.
   std::size_t f = 0;
+  const CellCorners& cc = corners(mw, "addCellEnergy");
+  const double* mwd = mw.data(0);
   for (const Field* energy : energies) {
     Field& ne = nodeEnergy_[f++];
     ne.fill(0.0);
+    corners(ne, "addCellEnergy");
+    double* ned = ne.data();
     core::forEach(cells_, [&](int i, int j, int k) {
       const double E = (*energy)(i, j, k);
       if (E == 0.0) return;
       double mc = 0;
-      forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) { mc += share * mw(ni, nj, nk, 0); });
+      cc.forCorners(i, j, k, [&](std::int64_t n, double share) { mc += share * mwd[n]; });
       if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
-      forCellNodes(mesh_, i, j, k,
-                   [&](int ni, int nj, int nk, double share) { ne(ni, nj, nk) += E * share * mw(ni, nj, nk, 0) / mc; });
+      cc.forCorners(i, j, k, [&](std::int64_t n, double share) { ned[n] += E * share * mwd[n] / mc; });
     });
     g.sumAndFill({&ne});
   }

@@ -78,6 +78,31 @@ void forCellNodes(const core::Mesh& mesh, int i, int j, int k, F&& f) {
   }
 }
 
+/// forCellNodes by flat offsets into node fields stored on one box (the grid's node fields): the
+/// same corners in the same order with the same shares, the shares kept per node and the corners
+/// as offsets from the cell's first corner, so a cell loop reads the fields' data directly.
+class CellCorners {
+ public:
+  CellCorners() = default;
+  CellCorners(const core::Mesh& mesh, const core::Box& nodes);
+  [[nodiscard]] const core::Box& nodes() const { return nodes_; }
+  /// f(n, share) for each corner node of cell (i, j, k), n the flat index in a field on nodes().
+  template <class F>
+  void forCorners(int i, int j, int k, F&& f) const {
+    const std::int64_t n0 = origin_ + i + sy_ * j + sz_ * k;
+    for (int c = 0; c < nc_; ++c) {
+      const std::int64_t n = n0 + off_[c];
+      f(n, share_[static_cast<std::size_t>(n)]);
+    }
+  }
+
+ private:
+  core::Box nodes_;
+  int nc_ = 0;
+  std::int64_t off_[8] = {}, sy_ = 0, sz_ = 0, origin_ = 0;
+  std::vector<double> share_;
+};
+
 class NodeCellOperators {
  public:
   /// References into the solver that owns this (they must outlive it). `ownedCells`: this rank's
@@ -99,7 +124,7 @@ class NodeCellOperators {
   const SolidCellState& cellState(int material);
   /// Per-cell Lagrangian momentum of material m: the node-to-cell average of m_node v_L (after the
   /// grid update; needs cellState(m) this step).
-  void cellLagrangianMomentum(int material, core::Field& out) const;
+  void cellLagrangianMomentum(int material, core::Field& out);
   /// Per-cell work [J] of the coupling forces (the grid's externalForce) on the nodes in this
   /// step's grid update (Grid::externalWork), node-to-cell averaged and shared among the solids in
   /// proportion to their node mass: sums over the cells to the nodes' total (after updateGrid).
@@ -178,6 +203,9 @@ class NodeCellOperators {
   void solidFaceTransport(int material, core::Field& density, core::Field& flux);
 
  private:
+  /// The node-to-cell corners of the node fields (all stored on the grid's node box), made on
+  /// first use; throws std::logic_error naming `what` if field f is stored on another box.
+  const CellCorners& corners(const core::Field& f, const char* what);
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
   const SolidCellState& current(int material, const char* op) const;
   /// nodeValue_ = (the average of the cells around each node of cellValue - offset, the sum of
@@ -229,6 +257,7 @@ class NodeCellOperators {
   std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
   core::Field faceTransport_;                  // solidFaceTransport() node-indexed faces (D, F per d)
+  CellCorners corners_;                        // corners(): the node-to-cell average by flat offsets
   // cellCouplingWork(): the forces of this step as they were spread (stamp: the generation).
   std::vector<std::vector<double>> cellForce_;   // per material: addCellForce()'s cell vectors (3 per owned cell)
   std::vector<std::uint64_t> cellForceStamp_;
