@@ -1,6 +1,8 @@
 #include "ice/face/solid_faces.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include "ice/ice_constants.h"
 
@@ -17,6 +19,7 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
   const int dim = mesh.dim();
   const core::Box domain = mesh.cellBox();
   const core::Box& sb = st.press.box();
+  std::vector<double> coverAt, fluxAt;  // per face of fb and its neighbours in d
   for (int d = 0; d < dim; ++d) {
     const core::Box fb = owned.faces(d);
     if (sf.cover[d].npts() == 0) {
@@ -42,16 +45,23 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
       }
       cover = std::clamp(cover, 0.0, kMaxSolidFraction);
     };
+    // Each face's cover and flux once, over the faces and their neighbours in d (the inside test
+    // reads the covers of the faces below and above).
+    const core::Box fx = fb.growDir(d, 1);
+    const std::int64_t step = d == 0 ? 1 : (d == 1 ? fx.length(0) : std::int64_t(fx.length(0)) * fx.length(1));
+    coverAt.resize(static_cast<std::size_t>(fx.numPts()));
+    fluxAt.resize(static_cast<std::size_t>(fx.numPts()));
+    forEach(fx, [&](int i, int j, int k) {
+      const auto n = static_cast<std::size_t>(fx.index(i, j, k));
+      faceValues(i, j, k, coverAt[n], fluxAt[n]);
+    });
     forEach(fb, [&](int i, int j, int k) {
-      double c, q, cLo, cHi, dummy;
-      faceValues(i, j, k, c, q);
-      int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-      lo[d] -= 1;
-      hi[d] += 1;
-      faceValues(lo[0], lo[1], lo[2], cLo, dummy);
-      faceValues(hi[0], hi[1], hi[2], cHi, dummy);
+      const std::int64_t n = fx.index(i, j, k);
+      const double c = coverAt[static_cast<std::size_t>(n)];
+      const double cLo = coverAt[static_cast<std::size_t>(n - step)];
+      const double cHi = coverAt[static_cast<std::size_t>(n + step)];
       sf.cover[d](i, j, k) = c;
-      sf.flux[d](i, j, k) = q;
+      sf.flux[d](i, j, k) = fluxAt[static_cast<std::size_t>(n)];
       // A relative tolerance on the comparisons: a uniform solid's plateau, or the half-covered
       // face of a solid one cell thick, must not flip with the round-off of the sums (the order
       // of the particles' and the ranks' contributions).
