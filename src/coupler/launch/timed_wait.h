@@ -8,10 +8,12 @@
 /// How it waits: it polls without pause while this process has its core (the latency of the
 /// shared-memory transport, ~1 us, and the core is otherwise idle), checking every 16 polls
 /// whether the kernel took the core away (involuntary context switches of the thread, which a
-/// yield that let another task run also counts). Once it did (the cores are oversubscribed:
-/// more ranks than cores, builds, other tests), the wait polls between sleeps growing from 2 to
-/// 100 us, and the waits of the next 200 ms spin only 20 us before sleeping, so a waiting rank
-/// leaves the core to the peer it waits for. docs/benchmarks.md ("Coupling overhead").
+/// yield that let another task run also counts). Once it did and the core is shared (the thread
+/// waited for a core more than 5 % of the wall time since the last check, the kernel's run delay:
+/// more ranks than cores, builds, other tests; an idle node's brief preemptions do not count), the
+/// wait polls between sleeps growing from 2 to 100 us, and the waits of the next 50 ms (renewed
+/// while the core stays shared) spin only 20 us before sleeping, so a waiting rank leaves the core
+/// to the peer it waits for. docs/benchmarks.md ("Coupling overhead").
 #include <mpi.h>
 
 #include <stdexcept>
