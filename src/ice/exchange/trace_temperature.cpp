@@ -64,7 +64,13 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
                            m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]);
       const double kf = m.kappa.data()[c];
       const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
-      const double de = wf * m.eos->cv() * (dTs - dTown);
+      // Towards the heat-capacity-weighted mean change of the fluid and the solids, which the
+      // solids pay: for a trace (Cf ~ 1e-13 Cs) the solids' change, as above; for a fluid with a
+      // heat capacity like the solids' both meet between their own changes, so neither goes past
+      // the other's (a soft solid's cell holds real water at wf ~ 0.5: moved to the solid's change,
+      // expanding water took its heat from a PVC tube's corner particles to below 0 K).
+      const double Cf = mass * m.eos->cv();
+      const double de = wf * m.eos->cv() * Cs / (Cs + Cf) * (dTs - dTown);
       e += de;
       Q += mass * de;
     }

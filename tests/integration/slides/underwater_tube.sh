@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The underwater scene with the slides' PVC tube around the charge (issue 16): configs/underwater_foam_2d.yaml
+# with the tube's geometry object (4 mm PVC wall, x 12-16 mm, dipping 20 mm into the water), run with
+# mpmice for 12 us. It used to stop at 7.0 us on a PVC particle at the tube's lower outer corner below
+# 0 K: the embedded-fluid temperature rule (src/ice/exchange/trace_temperature.cpp) moved the
+# expanding water of the tube's cells to the soft PVC's temperature change and took that heat from
+# the PVC; it now moves both to their heat-capacity-weighted mean. Asserts the run completes (the
+# health checks stop it with a non-zero status on any non-physical state) with the tube's
+# particles in the output.
+#   underwater_tube.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src=$1 build=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$src/scripts/python" - "$src/configs/underwater_foam_2d.yaml" "$work/scene.yaml" <<'PY'
+import sys, yaml
+s = yaml.safe_load(open(sys.argv[1]))
+tube = {"name": "tube", "shape": {"type": "box", "lo": [0.012, 0.23], "hi": [0.016, 0.262]},
+        "material": "pvc", "particles_per_cell": 2}
+names = [g["name"] for g in s["geometry"]]
+s["geometry"].insert(names.index("charge"), tube)
+s["time"]["end"] = 1.2e-5
+s["output"]["directory"] = "out"
+s["output"]["interval"] = 1.0e-5
+yaml.safe_dump(s, open(sys.argv[2], "w"))
+PY
+cd "$work"
+"$build/coupler/mpmice" scene.yaml > run.log 2>&1 || { tail -n 5 run.log; echo "FAIL: mpmice with the tube"; exit 1; }
+grep -q "^done" run.log || { tail -n 5 run.log; echo "FAIL: no closing line"; exit 1; }
+"$src/scripts/python" - out <<'PY'
+import glob, sys, h5py, numpy as np
+f = sorted(glob.glob(sys.argv[1] + "/*_[0-9][0-9][0-9][0-9][0-9][0-9].h5"))[-1]
+with h5py.File(f) as h:
+    x = h["particles/position"][:]
+    T = h["particles/temperature"][:]
+    t = float(h.attrs["time"])
+tube = (x[:, 0] > 0.008) & (x[:, 1] > 0.2)   # the tube's particles (the foam lies below 3 cm)
+print(f"t = {t:.3g} s: {tube.sum()} tube particles, temperature {T[tube].min():.2f} .. {T[tube].max():.2f} K")
+if t < 1.2e-5 * (1 - 1e-9) or tube.sum() == 0 or not (T[tube].min() > 0):
+    print("FAIL: tube state")
+    sys.exit(1)
+PY
+echo "PASS: underwater tube"
