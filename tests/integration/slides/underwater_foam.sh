@@ -15,7 +15,8 @@
 #    forces and increments came from (src/mpm/cell/cell_coupling_work.cpp) the foam's top particle
 #    on the axis cooled 2-4 K a step after the shock arrived and the run stopped at 33.9 us (step
 #    442, `temperature [K] of solid 'foam' = -0.41`). Asserts: completes, crush above 8 mm
-#    (measured 10.08 mm), the coldest foam particle above 200 K (measured 222.9 K).
+#    (measured 10.07 mm), the coldest foam particle above 260 K (measured 279.7 K; 222.9 K before the
+#    embedded-fluid temperature rule moved a real fluid phase to the mean change, trace_temperature.cpp).
 #   underwater_foam.sh SOURCE_DIR BUILD_DIR water|air
 set -euo pipefail
 src=$1 build=$2 model=$3
@@ -38,7 +39,7 @@ if model == "water":
         g["shape"]["hi"][0] = min(g["shape"]["hi"][0], width)
     where, former = f"x <= {width} m", "the energy audit at 94.7 us"
 else:
-    end, min_crush, min_t = 3.8e-5, 8.0e-3, 200.0
+    end, min_crush, min_t = 3.8e-5, 8.0e-3, 260.0
     s = F.scene("air", end)
     where, former = "6 cm", "the foam's top below 0 K at 33.9 us"
 s["output"]["interval"] = min(1.0e-5, end)
