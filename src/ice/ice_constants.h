@@ -67,9 +67,5 @@ inline constexpr double kMaxVolumeChange = 0.5;
 /// Lagrangian energy fix keeps e_L). Measured from e_cold, not from e = 0: a Mie-Gruneisen liquid
 /// with a reference temperature has e = 0 at T0 (slides_underwater_foam_water). No test pins the value.
 inline constexpr double kMinEnergyShare = 0.1;
-/// The semi-implicit step's speed floor, as a share of the sound speed, in the CFL bound.
-/// No test pins it (the semi-implicit IceSod and IceWaterAir runs take the step it gives, but
-/// their error bounds do not single it out).
-inline constexpr double kSemiImplicitSoundShare = 0.1;
 
 }  // namespace mpmice::ice

@@ -226,6 +226,10 @@ struct IceOptions {
   // Traces: a fluid below this fraction of a cell's fluid mass is held at its carried volume when
   // the cell's pressure is below its own (docs/ice.md "Traces"); 0 turns the rule off.
   double trace_mass_fraction = 1e-6;
+  // The semi-implicit step's speed floor in its CFL bound, as a fraction of the cell's sound speed:
+  // the step is at most cfl dx / (fraction c) even where the flow is slower (docs/ice.md
+  // "Semi-implicit step"). A low-Mach flow whose acoustics do not matter may lower it.
+  double semi_implicit_sound_fraction = 0.1;
   // The equilibrium pressure's energies: "fixed_energy" (each material keeps its carried e while
   // the solve moves volume between materials) or "with_work" (each fluid does the work p dv of its
   // volume change, the fluids' energy conserved; docs/ice.md "Equilibrium with work").

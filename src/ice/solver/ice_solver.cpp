@@ -118,7 +118,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     }
     double s = 0;
     for (int d = 0; d < dim; ++d)
-      s += (semiImplicit_ ? std::max(umax[d], kSemiImplicitSoundShare * cs) : umax[d] + cs) / mesh_.dx(d);
+      s += (semiImplicit_ ? std::max(umax[d], soundFraction_ * cs) : umax[d] + cs) / mesh_.dx(d);
     // The shock viscosity is an explicit diffusion with nu = (q1 c + q2 |du|) dx: stable for
     // dt <= dx / (2 (q1 c + q2 |du|)); added to the rate, so the CFL factor covers it as well.
     if (q1_ > 0 || q2_ > 0)

@@ -202,6 +202,7 @@ class IceSolver {
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
   bool secondOrder_ = true, semiImplicit_ = false;
+  double soundFraction_ = 0.1;  // ice.semi_implicit_sound_fraction: the semi-implicit step's speed floor / c
   bool equilibriumWork_ = false;  // ice.equilibrium: with_work
   enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;
   std::string linearSolverName_ = "pfmg_pcg";

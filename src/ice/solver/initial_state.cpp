@@ -31,6 +31,7 @@ void IceSolver::initialize(const core::Scene& scene) {
     throw std::invalid_argument("ice.pressure_solver: unknown value '" + o.pressure_solver +
                                 "'; valid: explicit, semi_implicit");
   semiImplicit_ = o.pressure_solver == "semi_implicit";
+  soundFraction_ = o.semi_implicit_sound_fraction;
   if (o.equilibrium != "fixed_energy" && o.equilibrium != "with_work")
     throw std::invalid_argument("ice.equilibrium: unknown value '" + o.equilibrium + "'; valid: fixed_energy, with_work");
   equilibriumWork_ = o.equilibrium == "with_work";

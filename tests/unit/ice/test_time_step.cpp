@@ -138,3 +138,29 @@ TEST(IceTimeStep, RiemannFacePressureRateAddsToTheViscousOne) {
   setCheckerboard(avg, 5000.0);
   EXPECT_GT(avg.stableTimeStep(), 1.05 / R3);
 }
+
+// The semi-implicit step's speed floor (ice.semi_implicit_sound_fraction, default 0.1): in gas at
+// rest the step is cfl / sum_d (fraction c / dx_d), so it scales as 1 / fraction; the explicit
+// pressure ignores the key (its bound holds |u| + c).
+TEST(IceTimeStep, SemiImplicitSoundFractionSetsTheStepOfASlowFlow) {
+  core::Scene s = checkerboardBox(0.0);
+  s.ice.pressure_solver = "semi_implicit";
+  ice::IceSolver def(s, test::comm());
+  def.computeEquilibriumPressure();
+  const auto& m = def.state().mat[0];
+  const double c = std::sqrt(m.spvol(3, 3, 0) / m.kappa(3, 3, 0));
+  EXPECT_NEAR(def.stableTimeStep(), 0.4 / (2 * 0.1 * c / 0.1), 1e-12);  // dx = dy = 0.1
+  core::Scene low = s;
+  low.ice.semi_implicit_sound_fraction = 0.02;
+  ice::IceSolver slow(low, test::comm());
+  slow.computeEquilibriumPressure();
+  EXPECT_NEAR(slow.stableTimeStep() / def.stableTimeStep(), 5.0, 1e-12);
+  core::Scene ex = low;
+  ex.ice.pressure_solver = "explicit";
+  core::Scene ex0 = s;
+  ex0.ice.pressure_solver = "explicit";
+  ice::IceSolver a(ex, test::comm()), b(ex0, test::comm());
+  a.computeEquilibriumPressure();
+  b.computeEquilibriumPressure();
+  EXPECT_EQ(a.stableTimeStep(), b.stableTimeStep());
+}
