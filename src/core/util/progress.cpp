@@ -53,7 +53,7 @@ double Progress::eta(double t, double tStart, double tEnd, double wall) {
 }
 
 std::string Progress::formatLine(int step, double t, double tStart, double tEnd, double dt, double wall,
-                                 const Extras& extras, long maxSteps, long stepStart) {
+                                 const Extras& extras, long maxSteps, long stepStart, const std::string& tail) {
   const double done = fractionDone(t, tStart, tEnd, step, maxSteps, stepStart);
   std::string s = "step " + std::to_string(step) + "  t = " + fmt("%.3e", t) + " / " + fmt("%.3e", tEnd) +
                   " s (" + fmt("%.1f", 100.0 * done) + "%)  dt = " + fmt("%.1e", dt) + "  wall " +
@@ -61,10 +61,11 @@ std::string Progress::formatLine(int step, double t, double tStart, double tEnd,
   const double e = etaFromFraction(done, wall);
   s += e >= 0 ? "  ETA " + fmt("%.1f", e) + " s" : std::string("  ETA --");
   for (const auto& [key, value] : extras) s += "  " + key + "=" + fmt("%g", value);
+  if (!tail.empty()) s += "  " + tail;
   return s;
 }
 
-bool Progress::step(int step, double t, double dt, const Extras& extras, bool force) {
+bool Progress::step(int step, double t, double dt, const Extras& extras, bool force, const std::string& tail) {
   if (!printer_) return false;
   const double now = clock_();
   const bool bySteps = opts_.everySteps > 0 && step % opts_.everySteps == 0;
@@ -72,8 +73,8 @@ bool Progress::step(int step, double t, double dt, const Extras& extras, bool fo
   const bool always = opts_.everySteps <= 0 && opts_.everySeconds <= 0;
   if (!(force || bySteps || byTime || always)) return false;
   lastPrint_ = now;
-  os_ << formatLine(step, t, tStart_, tEnd_, dt, now - wallStart_, extras, opts_.maxSteps, opts_.stepStart) << '\n'
-      << std::flush;
+  os_ << formatLine(step, t, tStart_, tEnd_, dt, now - wallStart_, extras, opts_.maxSteps, opts_.stepStart, tail)
+      << '\n' << std::flush;
   return true;
 }
 

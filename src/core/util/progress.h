@@ -40,7 +40,8 @@ class Progress {
   /// Prints the banner and starts the wall clock.
   void start(const std::string& scene, const std::string& meshDescription, int ranks);
   /// Reports a finished step; prints when due (or when force). Returns true when a line was printed.
-  bool step(int step, double t, double dt, const Extras& extras = {}, bool force = false);
+  /// `tail` (e.g. "dt_by=solid"), when given, ends the line.
+  bool step(int step, double t, double dt, const Extras& extras = {}, bool force = false, const std::string& tail = "");
   /// Prints the summary: steps, simulated time, wall time, steps/s and work/s (work = steps *
   /// workPerStep, named `workUnit`, e.g. cells per step -> "cell-steps").
   void finish(int steps, double t, double workPerStep = 0.0, const std::string& workUnit = "cell-steps");
@@ -50,7 +51,8 @@ class Progress {
 
   /// The step line for given values (pure; what step() prints).
   static std::string formatLine(int step, double t, double tStart, double tEnd, double dt, double wall,
-                                const Extras& extras = {}, long maxSteps = 0, long stepStart = 0);
+                                const Extras& extras = {}, long maxSteps = 0, long stepStart = 0,
+                                const std::string& tail = "");
   /// Fraction of the run done (0..1): the larger of the time's and the steps' (see above).
   static double fractionDone(double t, double tStart, double tEnd, long step = 0, long maxSteps = 0,
                              long stepStart = 0);

@@ -130,16 +130,19 @@ std::optional<std::string> LaunchOutput::coupledProgressLine(const std::string& 
   std::string out = "coupler: step " + m[1].str() + "  t = " + m[2].str() + " / " + m[3].str() + " s (" + m[4].str() +
                     ")  ETA " + (m[5].str() == "--" ? std::string("--") : m[5].str() + " s");
   std::optional<double> iters, total;
+  std::string dtBy;
   const std::string extras = m[6].str();
   for (auto it = std::sregex_iterator(extras.begin(), extras.end(), extra); it != std::sregex_iterator(); ++it) {
     if ((*it)[1] == "iters") iters = std::stod((*it)[2]);
     if ((*it)[1] == "iters_total") total = std::stod((*it)[2]);
+    if ((*it)[1] == "dt_by") dtBy = (*it)[2];
   }
   if (iters) {
     out += "  coupling iterations " + fmt(*iters);
     const long steps = std::stol(m[1]);
     if (total && steps > 0) out += " (" + fmt(*total / double(steps)) + " per step)";
   }
+  if (!dtBy.empty()) out += "  dt set by " + (dtBy.starts_with("time.") ? dtBy : "the " + dtBy + " side");
   return out;
 }
 

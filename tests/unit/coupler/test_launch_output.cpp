@@ -126,6 +126,15 @@ TEST(LaunchOutput, TheSolidsProgressBecomesOneCoupledProgressLine) {
             "coupler: step 120  t = 1.200e-04 / 1.500e-04 s (80.0%)  ETA 0.4 s  coupling iterations 3 (2.5 per step)");
   EXPECT_EQ(*coupler::LaunchOutput::coupledProgressLine("step 1  t = 0.000e+00 / 1.0e+00 s (0.0%)  dt = 1.0e-06  wall 0.0 s  ETA --"),
             "coupler: step 1  t = 0.000e+00 / 1.0e+00 s (0.0%)  ETA --");
+  // What set the step (dt_by=, volume_run.cpp) is carried over.
+  EXPECT_EQ(*coupler::LaunchOutput::coupledProgressLine(
+                "step 4  t = 4.000e-06 / 1.0e+00 s (0.0%)  dt = 1.0e-06  wall 0.1 s  ETA --  iters=1  iters_total=4  "
+                "dt_by=fluid"),
+            "coupler: step 4  t = 4.000e-06 / 1.0e+00 s (0.0%)  ETA --  coupling iterations 1 (1 per step)  dt set by "
+            "the fluid side");
+  EXPECT_EQ(*coupler::LaunchOutput::coupledProgressLine(
+                "step 4  t = 4.000e-06 / 1.0e+00 s (0.0%)  dt = 1.0e-06  wall 0.1 s  ETA --  dt_by=time.end"),
+            "coupler: step 4  t = 4.000e-06 / 1.0e+00 s (0.0%)  ETA --  dt set by time.end");
   EXPECT_FALSE(coupler::LaunchOutput::coupledProgressLine("step 10  t = 1.0e-05 / 2.0e-05 s (50.0%)"));
   EXPECT_FALSE(coupler::LaunchOutput::coupledProgressLine("done: 3 steps, t = 2.005e-05 s, wall 0.9 s"));
 

@@ -12,6 +12,9 @@ TEST(Progress, LineMatchesTheDocumentedFormat) {
             "step 1200  t = 1.200e-03 / 4.000e-03 s (30.0%)  dt = 1.0e-06  wall 12.3 s  ETA 28.7 s");
   EXPECT_EQ(Progress::formatLine(5, 0.5, 0.0, 1.0, 0.1, 2.0, {{"iters", 3}, {"res", 1.5e-7}}),
             "step 5  t = 5.000e-01 / 1.000e+00 s (50.0%)  dt = 1.0e-01  wall 2.0 s  ETA 2.0 s  iters=3  res=1.5e-07");
+  // A coupled run ends its line with what set the step (couplings/volume/run/volume_run.cpp).
+  EXPECT_EQ(Progress::formatLine(5, 0.5, 0.0, 1.0, 0.1, 2.0, {{"iters", 1}}, 0, 0, "dt_by=solid"),
+            "step 5  t = 5.000e-01 / 1.000e+00 s (50.0%)  dt = 1.0e-01  wall 2.0 s  ETA 2.0 s  iters=1  dt_by=solid");
 }
 
 TEST(Progress, EtaIsElapsedTimesRemainingOverDone) {

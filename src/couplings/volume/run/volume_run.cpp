@@ -200,6 +200,14 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
       throw core::HealthError(both ? what : label + ": " + what, comm.root());
     }
     const double dt = core::landOn(t, stable, scene.time.end);
+    // What set the step, for the progress line: this program's side, the peer's, time.dt_max or
+    // the end time it lands on.
+    const char* dtBy = dt < stable                      ? "time.end"
+                       : stable == scene.time.dt_max    ? "time.dt_max"
+                       : sides.solid && solidStep == stable ? "solid"
+                       : sides.fluid && fluidStep == stable ? "fluid"
+                       : sides.solid                        ? "fluid"
+                                                            : "solid";
     if (scene.time.dt_min > 0 && dt < scene.time.dt_min) {
       std::ostringstream os;
       os << label << ": time step " << dt << " s at t = " << t << " s (step " << n + 1
@@ -237,7 +245,8 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     if (sides.fluid && sides.fluid->solver().semiImplicit())
       extras.emplace_back("lin_iters", double(sides.fluid->solver().linearIterations()));
     const bool last = !core::goesOn(t, n, scene.time.end, scene.time.max_steps);
-    progress.step(static_cast<int>(n), t, dt, extras, last && sides.solid);  // the solid prints the last step always
+    progress.step(static_cast<int>(n), t, dt, extras, last && sides.solid,  // the solid prints the last step always
+                  std::string("dt_by=") + dtBy);
     if (last && !outputs.written(t) && outputs.due(t, true)) output(n, t);  // the last step
     checkpoint(last);
   }
