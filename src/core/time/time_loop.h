@@ -29,6 +29,19 @@ inline constexpr double kTimeTolerance = 1e-12;
 /// The step to take from t: dt, shortened so that the run lands on `end`.
 [[nodiscard]] constexpr double landOn(double t, double dt, double end) { return t + dt > end ? end - t : dt; }
 
+/// What set a coupled step, for the progress line: "time.end" (landOn shortened it), "time.dt_max",
+/// or the side whose stable step it is ("solid", "fluid"). `solidStep` / `fluidStep`: the stable
+/// steps of the sides this program runs (infinity for a side it does not run); a stable step
+/// that is neither is the peer program's, i.e. the side this program does not run.
+[[nodiscard]] constexpr const char* stepSetBy(double dt, double stable, double dtMax, double solidStep,
+                                              double fluidStep, bool runsSolid) {
+  if (dt < stable) return "time.end";
+  if (stable == dtMax) return "time.dt_max";
+  if (solidStep == stable) return "solid";
+  if (fluidStep == stable) return "fluid";
+  return runsSolid ? "fluid" : "solid";
+}
+
 class OutputSchedule {
  public:
   /// interval: output.interval (0 = start and end only); end: time.end.

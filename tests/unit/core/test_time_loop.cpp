@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <limits>
 #include <vector>
 
 #include "core/time/time_loop.h"
@@ -74,6 +75,19 @@ TEST(OutputSchedule, AHugeEndWithMaxStepsStopsAtMaxStepsAndWritesTheLastStep) {
   const auto at = written(0.0, 1e300, 1e-3, 4);
   ASSERT_EQ(at.size(), 2u);  // the start and the last step taken
   EXPECT_NEAR(at[1], 4e-3, 1e-15);
+}
+
+// What set a coupled step (the progress line's dt_by=): the end time, time.dt_max, a side run here,
+// or, when the stable step is neither of this program's, the peer's side.
+TEST(TimeLoop, StepSetByNamesTheBoundThatSetTheStep) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  EXPECT_STREQ(stepSetBy(0.5e-6, 1e-6, inf, 1e-6, 2e-6, true), "time.end");
+  EXPECT_STREQ(stepSetBy(1e-6, 1e-6, 1e-6, 3e-6, 2e-6, true), "time.dt_max");
+  EXPECT_STREQ(stepSetBy(1e-6, 1e-6, inf, 1e-6, 2e-6, true), "solid");   // mpmice, solid's step
+  EXPECT_STREQ(stepSetBy(2e-6, 2e-6, inf, 3e-6, 2e-6, true), "fluid");   // mpmice, fluid's step
+  EXPECT_STREQ(stepSetBy(2e-6, 2e-6, inf, 3e-6, inf, true), "fluid");    // MPMD solid: the peer's
+  EXPECT_STREQ(stepSetBy(2e-6, 2e-6, inf, inf, 3e-6, false), "solid");   // MPMD fluid: the peer's
+  EXPECT_STREQ(stepSetBy(3e-6, 3e-6, inf, inf, 3e-6, false), "fluid");   // MPMD fluid: its own
 }
 
 }  // namespace

@@ -200,14 +200,8 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
       throw core::HealthError(both ? what : label + ": " + what, comm.root());
     }
     const double dt = core::landOn(t, stable, scene.time.end);
-    // What set the step, for the progress line: this program's side, the peer's, time.dt_max or
-    // the end time it lands on.
-    const char* dtBy = dt < stable                      ? "time.end"
-                       : stable == scene.time.dt_max    ? "time.dt_max"
-                       : sides.solid && solidStep == stable ? "solid"
-                       : sides.fluid && fluidStep == stable ? "fluid"
-                       : sides.solid                        ? "fluid"
-                                                            : "solid";
+    const char* dtBy =
+        core::stepSetBy(dt, stable, scene.time.dt_max, solidStep, fluidStep, sides.solid != nullptr);
     if (scene.time.dt_min > 0 && dt < scene.time.dt_min) {
       std::ostringstream os;
       os << label << ": time step " << dt << " s at t = " << t << " s (step " << n + 1
