@@ -12,10 +12,12 @@
 /// Scene names: linear_elastic, neo_hookean, j2_plasticity, cowper_symonds (j2_plasticity.h),
 /// crushable_foam (parameters: see each header).
 /// An unknown name is an error listing the valid names.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mpm/particles/particle_set.h"
@@ -34,27 +36,56 @@ class ConstitutiveModel {
   /// Dilatational (P-) wave speed at density rho, for the time step.
   [[nodiscard]] virtual double waveSpeed(double rho) const = 0;
   /// The CFL signal speed of particles [begin, end): max of waveSpeed(m / V) + |v| (the first `dim`
-  /// velocity components), 0 if the range is empty; `arg` the first particle reaching it (end if
-  /// none). One virtual call per material: ElasticWaveModel implements it with maxSignalSpeedOver().
+  /// velocity components), 0 if the range is empty; `*arg` (when asked for) the first particle
+  /// reaching it (end if none). One virtual call per material: ElasticWaveModel implements it with
+  /// maxSignalSpeedOver().
   [[nodiscard]] virtual double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
-                                              std::size_t& arg) const = 0;
+                                              std::size_t* arg = nullptr) const = 0;
 };
 
-/// The loop of ConstitutiveModel::maxSignalSpeed with the model's wave speed c(rho) inlined.
+/// The loop of ConstitutiveModel::maxSignalSpeed with the model's wave speed c(rho) inlined. The
+/// speeds are computed in chunks into a local array (a loop the compiler vectorizes: its divisions
+/// and square roots are the cost) and the maximum taken over each chunk; the position, when asked
+/// for, by a second pass that evaluates the same expression (the same bits) until it meets the
+/// maximum.
 template <class C>
-double maxSignalSpeedOver(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t& arg, C&& c) {
-  double cmax = 0;
-  arg = end;
-  for (std::size_t i = begin; i < end; ++i) {
-    double v2 = 0;
-    for (int d = 0; d < dim; ++d) v2 += p.v[d][i] * p.v[d][i];
-    const double s = c(p.mass[i] / p.vol[i]) + std::sqrt(v2);
-    if (s > cmax) {
-      cmax = s;
-      arg = i;
+double maxSignalSpeedOver(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t* arg, C&& c) {
+  const double* v0 = p.v[0].data();
+  const double* v1 = dim >= 2 ? p.v[1].data() : v0;
+  const double* v2p = dim >= 3 ? p.v[2].data() : v0;
+  const double* mass = p.mass.data();
+  const double* vol = p.vol.data();
+  const auto speed = [&](std::size_t i, auto dims) {
+    constexpr int kDim = decltype(dims)::value;
+    double vv = v0[i] * v0[i];
+    if constexpr (kDim >= 2) vv += v1[i] * v1[i];
+    if constexpr (kDim >= 3) vv += v2p[i] * v2p[i];
+    return c(mass[i] / vol[i]) + std::sqrt(vv);
+  };
+  const auto scan = [&](auto dims) {
+    constexpr std::size_t kChunk = 256;
+    double s[kChunk];
+    double cmax = 0;
+    for (std::size_t b = begin; b < end; b += kChunk) {
+      const std::size_t n = std::min(kChunk, end - b);
+      for (std::size_t k = 0; k < n; ++k) s[k] = speed(b + k, dims);
+      for (std::size_t k = 0; k < n; ++k)
+        if (s[k] > cmax) cmax = s[k];  // a NaN speed is passed over
     }
-  }
-  return cmax;
+    if (arg) {
+      *arg = end;
+      if (cmax > 0)
+        for (std::size_t i = begin; i < end; ++i)
+          if (speed(i, dims) == cmax) {
+            *arg = i;
+            break;
+          }
+    }
+    return cmax;
+  };
+  if (dim == 1) return scan(std::integral_constant<int, 1>{});
+  if (dim == 2) return scan(std::integral_constant<int, 2>{});
+  return scan(std::integral_constant<int, 3>{});
 }
 
 /// Elastic constants read from a ModelSpec (bulk_modulus and shear_modulus, or youngs_modulus and
@@ -74,7 +105,7 @@ class ElasticWaveModel : public ConstitutiveModel {
   explicit ElasticWaveModel(const ElasticConstants& c) : c_(c) {}
   [[nodiscard]] double waveSpeed(double rho) const final { return c_.pWaveSpeed(rho); }
   [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
-                                      std::size_t& arg) const final {
+                                      std::size_t* arg = nullptr) const final {
     return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
   }
   [[nodiscard]] const ElasticConstants& constants() const { return c_; }

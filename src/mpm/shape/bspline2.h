@@ -4,7 +4,7 @@
 /// Uniform node-centred splines, not modified at the mesh boundary: near a boundary they reach
 /// the ghost node layer outside the mesh (the grid keeps one), which the boundary conditions
 /// treat like the boundary node. Node-index units as in LinearShape.
-#include <cmath>
+#include "mpm/shape/floor_index.h"
 
 namespace mpmice::mpm {
 
@@ -13,8 +13,8 @@ struct BSpline2Shape {
   static constexpr int kNodes = 3;
 
   static inline void eval(double xi, double /*lp*/, int& base, double* w, double* dw) {
-    const double fl = std::floor(xi - 0.5);
-    base = static_cast<int>(fl);
+    base = floorIndex(xi - 0.5);
+    const double fl = base;
     const double r0 = xi - fl;        // distance to node base, in [0.5, 1.5)
     const double r1 = r0 - 1.0;       // to base+1, in [-0.5, 0.5)
     const double r2 = r0 - 2.0;       // to base+2, in [-1.5, -0.5)

@@ -3,7 +3,7 @@
 ///
 /// Uniform node-centred splines, not modified at the mesh boundary (see BSpline2Shape). The
 /// widest stencil: most accurate on smooth fields, 16 (2D) or 64 (3D) nodes per particle.
-#include <cmath>
+#include "mpm/shape/floor_index.h"
 
 namespace mpmice::mpm {
 
@@ -12,8 +12,9 @@ struct BSpline3Shape {
   static constexpr int kNodes = 4;
 
   static inline void eval(double xi, double /*lp*/, int& base, double* w, double* dw) {
-    const double fl = std::floor(xi);
-    base = static_cast<int>(fl) - 1;
+    const int i = floorIndex(xi);
+    base = i - 1;
+    const double fl = i;
     const double f = xi - fl;  // in [0, 1)
     // Distances to nodes base..base+3: 1+f, f, 1-f, 2-f.
     const double a0 = 1.0 + f, a1 = f, a2 = 1.0 - f, a3 = 2.0 - f;

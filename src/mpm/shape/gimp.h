@@ -7,6 +7,8 @@
 /// units as in LinearShape; lp in the same units.
 #include <cmath>
 
+#include "mpm/shape/floor_index.h"
+
 namespace mpmice::mpm {
 
 struct GimpShape {
@@ -34,7 +36,7 @@ struct GimpShape {
   }
 
   static inline void eval(double xi, double lp, int& base, double* w, double* dw) {
-    base = static_cast<int>(std::floor(xi - 0.5));
+    base = floorIndex(xi - 0.5);
     for (int a = 0; a < 3; ++a) node(xi - (base + a), lp, w[a], dw[a]);
   }
 };

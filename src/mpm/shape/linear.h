@@ -5,7 +5,7 @@
 /// the first node of the stencil and, per stencil node, the weight and its derivative d/dxi
 /// (divide by dx for the physical gradient). C0 across cell faces: particles crossing cells
 /// feel the jump of the gradient (cell-crossing noise).
-#include <cmath>
+#include "mpm/shape/floor_index.h"
 
 namespace mpmice::mpm {
 
@@ -14,8 +14,8 @@ struct LinearShape {
   static constexpr int kNodes = 2;
 
   static inline void eval(double xi, double /*lp*/, int& base, double* w, double* dw) {
-    const double fl = std::floor(xi);
-    base = static_cast<int>(fl);
+    base = floorIndex(xi);
+    const double fl = base;
     const double f = xi - fl;
     w[0] = 1.0 - f;
     w[1] = f;

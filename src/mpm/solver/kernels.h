@@ -183,11 +183,37 @@ inline constexpr bool kCacheStencils = !std::is_same_v<Shape, BSpline2Shape> && 
 template <class Shape, int Dim>
 using StepStencils = std::conditional_t<kCacheStencils<Shape>, StencilCache<Shape, Dim>, EvaluatedStencils<Shape, Dim>>;
 
+/// The energy ledger's particle sums, kinetic energy 1/2 m |v|^2 and stored work, accumulated in
+/// particle order by a pass that reads the particles anyway (the same expressions and order as
+/// MpmSolver::particleKinetic / particleWork: the same bits, without a pass of their own).
+struct ParticleSums {
+  double kinetic = 0, work = 0;
+  static inline double kineticOf(const ParticleSet& p, std::size_t i) {
+    return 0.5 * p.mass[i] * (p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
+  }
+  /// The terms of particles [begin, end), added in order.
+  inline void add(const ParticleSet& p, std::size_t begin, std::size_t end) {
+    double ke = kinetic, wk = work;
+    for (std::size_t i = begin; i < end; ++i) {
+      ke += kineticOf(p, i);
+      wk += p.work[i];
+    }
+    kinetic = ke;
+    work = wk;
+  }
+};
+
 /// Mass and momentum to the nodes (lumped mass).
+/// `sums` (when given): the particles' ledger sums over the range, taken in the same pass.
 template <int Dim, class Src>
 void particlesToGrid(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
-                     double* mass, double* const mom[3]) {
+                     double* mass, double* const mom[3], ParticleSums* sums = nullptr) {
+  double ke = sums ? sums->kinetic : 0.0, wk = sums ? sums->work : 0.0;  // kept in registers
   for (std::size_t i = begin; i < end; ++i) {
+    if (sums) {
+      ke += ParticleSums::kineticOf(p, i);
+      wk += p.work[i];
+    }
     const double m = p.mass[i];
     double mv[3] = {0, 0, 0};
     for (int d = 0; d < Dim; ++d) mv[d] = m * p.v[d][i];
@@ -195,6 +221,10 @@ void particlesToGrid(const Src& src, const ParticleSet& p, std::size_t begin, st
       mass[n] += m * w;
       for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
     });
+  }
+  if (sums) {
+    sums->kinetic = ke;
+    sums->work = wk;
   }
 }
 template <class Shape, int Dim>
@@ -277,8 +307,13 @@ void internalForces(const Src& src, const ParticleSet& p, std::size_t begin, std
 template <int Dim, class Src>
 void particlesToGridWithForces(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end,
                                const GridGeom& g, double* mass, double* const mom[3], const double gravity[3],
-                               bool loads, double* const force[3]) {
+                               bool loads, double* const force[3], ParticleSums* sums = nullptr) {
+  double ke = sums ? sums->kinetic : 0.0, wk = sums ? sums->work : 0.0;  // kept in registers
   for (std::size_t i = begin; i < end; ++i) {
+    if (sums) {
+      ke += ParticleSums::kineticOf(p, i);
+      wk += p.work[i];
+    }
     const double m = p.mass[i];
     double mv[3] = {0, 0, 0};
     for (int d = 0; d < Dim; ++d) mv[d] = m * p.v[d][i];
@@ -288,6 +323,10 @@ void particlesToGridWithForces(const Src& src, const ParticleSet& p, std::size_t
       for (int d = 0; d < Dim; ++d) mom[d][n] += mv[d] * w;
       pf.scatter(force, n, w, gx, gy, gz);
     });
+  }
+  if (sums) {
+    sums->kinetic = ke;
+    sums->work = wk;
   }
 }
 

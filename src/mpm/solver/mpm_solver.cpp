@@ -147,7 +147,7 @@ double MpmSolver::stableTimeStep(std::size_t* limiting) const {
     if (!models_[m]) continue;
     const auto [b, e] = p_.materialRange(static_cast<int>(m));
     std::size_t at = e;
-    const double s = models_[m]->maxSignalSpeed(p_, b, e, mesh.dim(), at);
+    const double s = models_[m]->maxSignalSpeed(p_, b, e, mesh.dim(), limiting ? &at : nullptr);
     if (s > cmax) {
       cmax = s;
       arg = at;
@@ -317,8 +317,8 @@ void MpmSolver::particlesToGrid() {
 
 void MpmSolver::scatterToGrid(bool forces) {
   Grid& g = *grid_;
-  ledger_.keParticles = particleKinetic();
-  ledger_.work = particleWork();
+  // The ledger's particle sums at the start of the step, taken in the scatter pass.
+  kernels::ParticleSums sums;
   double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
   double* mass = g.mass.data();
   double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
@@ -328,9 +328,9 @@ void MpmSolver::scatterToGrid(bool forces) {
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     const auto scatter = [&](const auto& src) {
       if (forces)
-        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom, grav, loads, f);
+        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom, grav, loads, f, &sums);
       else
-        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom);
+        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom, &sums);
     };
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
@@ -341,6 +341,8 @@ void MpmSolver::scatterToGrid(bool forces) {
       scatter(kernels::EvaluatedStencils<S, D>{p_, {}});
     }
   });
+  ledger_.keParticles = sums.kinetic;
+  ledger_.work = sums.work;
 }
 
 void MpmSolver::finishParticlesToGrid() {
@@ -399,11 +401,15 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
   const GridGeom geom = grid_->geom();
   const int dim = scene_.mesh.dim();
   double cmax = 0;
+  kernels::ParticleSums sums;  // the step's last pass (kMove): the ledger's sums, block by block in order
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
     forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
       updateDeformation(b, e);
-      if (!model) return;
+      if (!model) {
+        if (kMove) sums.add(p_, b, e);
+        return;
+      }
       if (gridStressWork_) workScratch_.assign(p_.work.begin() + b, p_.work.begin() + e);
       model->updateStress(p_, b, e, dt_);
       // mpm.stress_work grid: the work is the grid's (addStressWork), the model's is dropped.
@@ -411,17 +417,52 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
       // The step's last particle pass (velocity, mass and volume final): the next time step's
       // signal speed over the block while it is in cache (the max of stableTimeStep's loop).
       if (kMove) {
-        std::size_t at = e;
-        cmax = std::max(cmax, model->maxSignalSpeed(p_, b, e, dim, at));
+        cmax = std::max(cmax, model->maxSignalSpeed(p_, b, e, dim));
+        sums.add(p_, b, e);
       }
     });
   });
   if (kMove) {
+    endSums_ = sums;
     stencilsValid_ = false;
     signalSpeed_ = cmax;
     signalSpeedValid_ = true;
   }
 }
+
+namespace {
+// F_n+1 = (I + dt L) F_n and V = V0 det F for 1D / 2D particles over distinct columns (restrict-
+// qualified parameters, which GCC honours where it ignores them on locals: the loop vectorizes,
+// lane by lane the same operations). In 1D L's yx, xy and yy are zero: those terms are left out.
+void planarDeformationUpdate(double* __restrict__ F0c, double* __restrict__ F1c, double* __restrict__ F3c,
+                             double* __restrict__ F4c, const double* __restrict__ L0c,
+                             const double* __restrict__ L1c, const double* __restrict__ L3c,
+                             const double* __restrict__ L4c, const double* __restrict__ vol0,
+                             double* __restrict__ vol, std::size_t begin, std::size_t end, double dt, bool two) {
+  if (two) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const double F0 = F0c[i], F1 = F1c[i], F3 = F3c[i], F4 = F4c[i];
+      const double L0 = L0c[i], L1 = L1c[i], L3 = L3c[i], L4 = L4c[i];
+      const double n0 = F0 + dt * L0 * F0 + dt * L1 * F3, n1 = F1 + dt * L0 * F1 + dt * L1 * F4;
+      const double n3 = F3 + dt * L3 * F0 + dt * L4 * F3, n4 = F4 + dt * L3 * F1 + dt * L4 * F4;
+      F0c[i] = n0;
+      F1c[i] = n1;
+      F3c[i] = n3;
+      F4c[i] = n4;
+      vol[i] = vol0[i] * (n0 * n4 - n1 * n3);
+    }
+    return;
+  }
+  for (std::size_t i = begin; i < end; ++i) {
+    const double F0 = F0c[i], F1 = F1c[i], F3 = F3c[i], F4 = F4c[i];
+    const double L0 = L0c[i];
+    const double n0 = F0 + dt * L0 * F0, n1 = F1 + dt * L0 * F1;
+    F0c[i] = n0;
+    F1c[i] = n1;
+    vol[i] = vol0[i] * (n0 * F4 - n1 * F3);
+  }
+}
+}  // namespace
 
 void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
   const double dt = dt_;
@@ -441,25 +482,10 @@ void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
   }
   // 1D / 2D: L is zero outside the mesh's directions and F keeps the identity there, so those
   // terms add exact zeros and are left out (the 3D formula's figures, bit for bit).
-  const bool two = scene_.mesh.dim() == 2;
-  for (std::size_t i = begin; i < end; ++i) {
-    const double F0 = p_.F[0][i], F1 = p_.F[1][i], F3 = p_.F[3][i], F4 = p_.F[4][i];
-    const double L0 = p_.L[0][i];
-    double n0 = F0 + dt * L0 * F0, n1 = F1 + dt * L0 * F1, n3 = F3, n4 = F4;
-    if (two) {
-      const double L1 = p_.L[1][i], L3 = p_.L[3][i], L4 = p_.L[4][i];
-      n0 += dt * L1 * F3;
-      n1 += dt * L1 * F4;
-      n3 = F3 + dt * L3 * F0 + dt * L4 * F3;
-      n4 = F4 + dt * L3 * F1 + dt * L4 * F4;
-    }
-    p_.F[0][i] = n0;
-    p_.F[1][i] = n1;
-    p_.F[3][i] = n3;
-    p_.F[4][i] = n4;
-    // F_zz is the exact 1 (not stored): n4 * 1 = n4, the 3D formula's figures.
-    p_.vol[i] = p_.vol0[i] * (n0 * n4 - n1 * n3);
-  }
+  // F_zz is the exact 1 (not stored): n4 * 1 = n4, the 3D formula's figures.
+  planarDeformationUpdate(p_.F[0].data(), p_.F[1].data(), p_.F[3].data(), p_.F[4].data(), p_.L[0].data(),
+                          p_.L[1].data(), p_.L[3].data(), p_.L[4].data(), p_.vol0.data(), p_.vol.data(), begin,
+                          end, dt, scene_.mesh.dim() == 2);
 }
 
 void MpmSolver::computeInternalForces() {
@@ -601,9 +627,12 @@ void MpmSolver::gridToParticles() {
       break;
     }
   }
-  const double keParticles = particleKinetic();
+  // USL / MUSL end with the block pass, which took the sums (forParticleBlocks visits the
+  // particles in order); USF sums here.
+  const bool summed = scheme_->kind != UpdateScheme::USF;
+  const double keParticles = summed ? endSums_.kinetic : particleKinetic();
   ledger_.transfer += (ledger_.keNodes - ledger_.keParticles) + (keParticles - keFinal);
-  ledger_.integration += particleWork() - ledger_.work;
+  ledger_.integration += (summed ? endSums_.work : particleWork()) - ledger_.work;
 }
 
 void MpmSolver::endStep() {
@@ -628,10 +657,13 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   double where[3] = {0, 0, 0};
   std::vector<char> keep;                  // only filled when a particle leaves
   std::vector<double> removed;             // per (face, material): count, mass; only when one leaves
+  // The grid coordinate as the stencils compute it (GridGeom: times 1 / dx), not a division per
+  // particle and direction (the division was 4 % of a 2D linear step).
+  const GridGeom geom = grid_->geom();
   for (std::size_t i = 0; i < n; ++i) {
     int face = -1;  // -1 inside; 0..5 the face crossed; 6 not finite
     for (int d = 0; d < dim && face < 0; ++d) {
-      const double q = (p_.x[d][i] - mesh.origin()[d]) / mesh.dx(d);
+      const double q = (p_.x[d][i] - geom.origin[d]) * geom.invDx[d];
       if (!std::isfinite(q)) face = 6;
       else if (q < 0.0) face = 2 * d;
       else if (!(q < mesh.cells()[d])) face = 2 * d + 1;

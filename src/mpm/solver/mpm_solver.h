@@ -30,6 +30,7 @@
 #include "core/scene/scene.h"
 #include "mpm/scheme/update_scheme.h"
 #include "mpm/shape/shape_function.h"
+#include "mpm/solver/kernels.h"
 
 namespace mpmice::mpm {
 
@@ -274,6 +275,8 @@ class MpmSolver {
   // outside or a step begins.
   double signalSpeed_ = 0;
   bool signalSpeedValid_ = false;
+  // The ledger's particle sums after the step's last particle pass (USL / MUSL), taken in it.
+  kernels::ParticleSums endSums_;
   Ledger ledger_;
   long long removedLastStep_ = 0;
   std::string removalReport_;
