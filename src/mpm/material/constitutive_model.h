@@ -12,14 +12,13 @@
 /// Scene names: linear_elastic, neo_hookean, j2_plasticity, cowper_symonds (j2_plasticity.h),
 /// crushable_foam (parameters: see each header).
 /// An unknown name is an error listing the valid names.
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
-#include <type_traits>
 #include <vector>
 
+#include "mpm/material/signal_speed.h"
 #include "mpm/particles/particle_set.h"
 #include "core/scene/scene.h"
 
@@ -43,58 +42,15 @@ class ConstitutiveModel {
                                               std::size_t* arg = nullptr) const = 0;
 };
 
-/// The loop of ConstitutiveModel::maxSignalSpeed with the model's wave speed c(rho) inlined. The
-/// speeds are computed in chunks into a local array (a loop the compiler vectorizes: its divisions
-/// and square roots are the cost) and the maximum taken over each chunk; the position, when asked
-/// for, by a second pass that evaluates the same expression (the same bits) until it meets the
-/// maximum.
-template <class C>
-double maxSignalSpeedOver(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t* arg, C&& c) {
-  const double* v0 = p.v[0].data();
-  const double* v1 = dim >= 2 ? p.v[1].data() : v0;
-  const double* v2p = dim >= 3 ? p.v[2].data() : v0;
-  const double* mass = p.mass.data();
-  const double* vol = p.vol.data();
-  const auto speed = [&](std::size_t i, auto dims) {
-    constexpr int kDim = decltype(dims)::value;
-    double vv = v0[i] * v0[i];
-    if constexpr (kDim >= 2) vv += v1[i] * v1[i];
-    if constexpr (kDim >= 3) vv += v2p[i] * v2p[i];
-    return c(mass[i] / vol[i]) + std::sqrt(vv);
-  };
-  const auto scan = [&](auto dims) {
-    constexpr std::size_t kChunk = 256;
-    double s[kChunk];
-    double cmax = 0;
-    for (std::size_t b = begin; b < end; b += kChunk) {
-      const std::size_t n = std::min(kChunk, end - b);
-      for (std::size_t k = 0; k < n; ++k) s[k] = speed(b + k, dims);
-      for (std::size_t k = 0; k < n; ++k)
-        if (s[k] > cmax) cmax = s[k];  // a NaN speed is passed over
-    }
-    if (arg) {
-      *arg = end;
-      if (cmax > 0)
-        for (std::size_t i = begin; i < end; ++i)
-          if (speed(i, dims) == cmax) {
-            *arg = i;
-            break;
-          }
-    }
-    return cmax;
-  };
-  if (dim == 1) return scan(std::integral_constant<int, 1>{});
-  if (dim == 2) return scan(std::integral_constant<int, 2>{});
-  return scan(std::integral_constant<int, 3>{});
-}
-
 /// Elastic constants read from a ModelSpec (bulk_modulus and shear_modulus, or youngs_modulus and
 /// poissons_ratio); `what` names the material in errors.
 struct ElasticConstants {
   double K = 0, G = 0;
   [[nodiscard]] double lambda() const { return K - 2.0 * G / 3.0; }
+  /// The P-wave modulus K + 4 G / 3.
+  [[nodiscard]] double pWaveModulus() const { return K + 4.0 * G / 3.0; }
   /// The P-wave speed sqrt((K + 4 G / 3) / rho).
-  [[nodiscard]] double pWaveSpeed(double rho) const { return std::sqrt((K + 4.0 * G / 3.0) / rho); }
+  [[nodiscard]] double pWaveSpeed(double rho) const { return std::sqrt(pWaveModulus() / rho); }
   static ElasticConstants fromSpec(const core::ModelSpec& spec, const std::string& what);
 };
 
@@ -106,7 +62,7 @@ class ElasticWaveModel : public ConstitutiveModel {
   [[nodiscard]] double waveSpeed(double rho) const final { return c_.pWaveSpeed(rho); }
   [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
                                       std::size_t* arg = nullptr) const final {
-    return maxSignalSpeedOver(p, begin, end, dim, arg, [this](double rho) { return c_.pWaveSpeed(rho); });
+    return maxElasticSignalSpeed(p, begin, end, dim, arg, c_.pWaveModulus());
   }
   [[nodiscard]] const ElasticConstants& constants() const { return c_; }
 
