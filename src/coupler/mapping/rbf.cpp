@@ -1,9 +1,11 @@
 #include "coupler/mapping/rbf.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mpmice::coupler {
 
@@ -47,6 +49,28 @@ Eigen::MatrixXd kernel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, doubl
   return k;
 }
 
+/// Throws if two source points coincide (the same coordinates in the first dim axes): the
+/// interpolation system then has two equal rows, and whether its factorisation shows that depends
+/// on the order of its operations (vector width), so it is checked on the points themselves.
+void rejectCoincidentPoints(const PointCloud& p, int dim) {
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto key = [&](std::size_t i) {
+    std::array<double, 3> k{0.0, 0.0, 0.0};
+    for (int d = 0; d < dim; ++d) k[static_cast<std::size_t>(d)] = p.x[static_cast<std::size_t>(d)][i];
+    return k;
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (key(order[k]) == key(order[k - 1])) {
+      const auto x = key(order[k]);
+      throw std::runtime_error("rbf mapping: source points " + std::to_string(std::min(order[k], order[k - 1])) +
+                               " and " + std::to_string(std::max(order[k], order[k - 1])) + " coincide at (" +
+                               std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) +
+                               "); remove duplicates from the source cloud");
+    }
+}
+
 }  // namespace
 
 Rbf::Rbf(double support) : support_(support) {
@@ -60,6 +84,7 @@ void Rbf::compute(const PointCloud& source, const PointCloud& target, int dim) {
   beginCompute(source, target, dim);
   m_.resize(0, 0);
   linearTerms_ = 0;
+  rejectCoincidentPoints(source, dim);
   const auto nS = static_cast<Eigen::Index>(source.size());
   const auto nT = static_cast<Eigen::Index>(target.size());
 
