@@ -1,8 +1,9 @@
 // IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces (with the
 // Riemann face pressure, at faces in compression the response to the pressure jump is at least the
-// two-shock solution's 1 / (W_L + W_R); beside a cell where the exchange holds a fluid to a solid,
-// at least the acoustic 1 / (Z_L + Z_R) of the fluid, weighted by the share of its velocity the
-// exchange resets: heldShare), and the face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
+// two-shock solution's 1 / (W_L + W_R); beside a cell where the exchange holds a fluid to a solid
+// that dictates its velocity, at least the fluid's acoustic 1 / (Z_L + Z_R) times that share:
+// heldShare), and the face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R)
+// (rho: mixture density),
 // minus the two-shock Riemann dissipation W_L W_R / (W_L + W_R) (u_R - u_L) at faces in compression
 // (ice.face_pressure: riemann, the default for fluids alone),
 // plus the shock viscosity q = rho (q1 c |du| + q2 du^2) at faces in compression when asked
@@ -64,31 +65,45 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
   return 1.0 / (wL + wR);
 }
 
-// The share of fluid r's velocity in stored cell c that the cell's implicit momentum exchange with
-// the external materials (the solids) resets in a step: a_r = beta / (1 + beta), where the two-material
-// solve of (theta_r / v_r) x_r + dt K theta_r theta_s (x_r - x_s) = (theta_r / v_r) x_r^L divides
-// the velocity difference by 1 + beta, beta = dt sum_s K_rs (theta_s v_r + theta_r v_s). 0 where no
-// solid is present; -> 1 for K = 1e15 wherever one is (even a smeared tail of theta_s = 1e-8).
+// The acoustic impedance rho c = 1 / sqrt(v kappa) of material m in stored cell c; 0 where it is
+// absent (theta at most kPresentFraction) or has no finite compressibility (a held trace, kappa 0;
+// a cavitated liquid, kappa inf).
+double impedance(const MaterialState& m, std::int64_t c) {
+  const double t = m.theta.data()[c], v = m.spvol.data()[c], ka = m.kappa.data()[c];
+  return t > kPresentFraction && v > 0 && ka > 0 && std::isfinite(ka) ? 1.0 / std::sqrt(v * ka) : 0.0;
+}
+
+// The share of fluid r's velocity in stored cell c that the solids (external materials) dictate
+// and the pressure does not: h = a w.
+//   a = beta / (1 + beta): the part of the fluid's velocity the cell's implicit momentum exchange
+//       resets to the solids' in a step (the two-material solve of (theta_r / v_r) x_r + dt K
+//       theta_r theta_s (x_r - x_s) = (theta_r / v_r) x_r^L divides the velocity difference by
+//       1 + beta, beta = dt sum_s K_rs (theta_s v_r + theta_r v_s)); 1 for K = 1e15 wherever a
+//       solid is present, 0 where none is.
+//   w = Z_s / (Z_s + Z_r): the solids' weight in the velocity of a fluid-solid interface (the
+//       acoustic interaction of the two, Z = rho c, Z_s the solids' volume-weighted mean): ~1 for
+//       a gas against a metal (a wall to the gas: the velocity is the solid's, whatever the gas's
+//       pressure), ~0.03 for water against a soft rubber (the rubber moves with the water's
+//       pressure, and the held velocity carries its impulses).
 double heldShare(const std::vector<MaterialState>& mat, const double* K, int r, std::int64_t c, double dt) {
   const MaterialState& f = mat[static_cast<std::size_t>(r)];
   const double tr = f.theta.data()[c], vr = f.spvol.data()[c];
   const int nm = static_cast<int>(mat.size());
-  double beta = 0;
+  double beta = 0, thetaS = 0, zS = 0;
   for (int s = 0; s < nm; ++s) {
     const MaterialState& m = mat[static_cast<std::size_t>(s)];
     if (!m.external || !(m.mass.data()[c] > 0)) continue;
-    beta += dt * K[r * nm + s] * (m.theta.data()[c] * vr + tr * m.spvol.data()[c]);
+    const double ts = m.theta.data()[c];
+    beta += dt * K[r * nm + s] * (ts * vr + tr * m.spvol.data()[c]);
+    thetaS += ts;
+    zS += ts * impedance(m, c);
   }
-  if (!(beta > 0)) return 0.0;
-  return std::isfinite(beta) ? beta / (1.0 + beta) : 1.0;
-}
-
-// The acoustic impedance rho c = 1 / sqrt(v kappa) of fluid m in stored cell c; 0 where it is
-// absent (theta at most kPresentFraction) or has no finite compressibility (a held trace, kappa 0;
-// a cavitated liquid, kappa inf).
-double fluidImpedance(const MaterialState& m, std::int64_t c) {
-  const double t = m.theta.data()[c], v = m.spvol.data()[c], ka = m.kappa.data()[c];
-  return t > kPresentFraction && v > 0 && ka > 0 && std::isfinite(ka) ? 1.0 / std::sqrt(v * ka) : 0.0;
+  if (!(beta > 0) || !(thetaS > 0)) return 0.0;
+  const double a = std::isfinite(beta) ? beta / (1.0 + beta) : 1.0;
+  zS /= thetaS;
+  const double zr = impedance(f, c);
+  const double w = zS + zr > 0 ? zS / (zS + zr) : 1.0;
+  return a * w;
 }
 }  // namespace
 
@@ -170,22 +185,23 @@ void IceSolver::computeFaceVelocities() {
         const double mL = P.m[cL], mR = P.m[cR];
         const double msum = mL + mR;
         const double t1 = msum > 0 ? (mL * P.u[cL] + mR * P.u[cR]) / msum : 0.5 * (P.u[cL] + P.u[cR]);
-        // Beside a cell where the exchange holds this fluid to a solid, its cell velocity is the
-        // solid's after every step: it carries none of the pressure gradient's past impulses, so
-        // dt v_r grad p is the only pressure-velocity coupling the face has, and it vanishes with
-        // dt. A velocity bias of the held cell (the gas in the piston's smeared surface cell moves
-        // with the copper) was then balanced by a pressure deficit ~ 1 / dt: the surface cells
-        // lost gas to the pure gas at every step, 0.75 / 1.81 / 2.30 % at the piston's CFL 0.4 /
-        // 0.1 / 0.05 (docs/verification-coupled.md, "The error grew as the step shrank"). The
-        // response without memory is the acoustic (linearised Riemann) one, 1 / (Z_L + Z_R) with
-        // the fluid's own impedances, whatever dt; weighted by the share a of the velocity the
-        // exchange resets (the larger of the two cells'), and never below dt v_r.
+        // Beside a cell where the exchange holds this fluid to a solid that the fluid cannot move
+        // (a gas against a metal), its cell velocity is the solid's after every step: it carries
+        // none of the pressure gradient's past impulses, so dt v_r grad p is the only
+        // pressure-velocity coupling the face has, and it vanishes with dt. A velocity bias of
+        // the held cell (the gas in the piston's smeared surface cell moves with the copper) was
+        // then balanced by a pressure deficit ~ 1 / dt: the surface cells lost gas to the pure
+        // gas at every step, 0.75 / 1.81 / 2.30 % at the piston's CFL 0.4 / 0.1 / 0.05
+        // (docs/verification-coupled.md, "The error grew as the step shrank"). The response
+        // without memory is the acoustic (linearised Riemann) one, 1 / (Z_L + Z_R) with the
+        // fluid's own impedances, whatever dt; weighted by the held share h (heldShare, the larger
+        // of the two cells'), and never below dt v_r.
         double held = 0;
         if (exchSolids && !st_.mat[r].external) {
-          const double a = std::max(heldShare(st_.mat, K_.data(), r, cL, dt), heldShare(st_.mat, K_.data(), r, cR, dt));
-          if (a > 0) {
-            const double zL = fluidImpedance(st_.mat[r], cL), zR = fluidImpedance(st_.mat[r], cR);
-            if (zL > 0 && zR > 0) held = a * dx / (zL + zR);
+          const double h = std::max(heldShare(st_.mat, K_.data(), r, cL, dt), heldShare(st_.mat, K_.data(), r, cR, dt));
+          if (h > 0) {
+            const double zL = impedance(st_.mat[r], cL), zR = impedance(st_.mat[r], cR);
+            if (zL > 0 && zR > 0) held = h * dx / (zL + zR);
           }
         }
         x[r] = t1 - std::max({dt * vf[r], riemann, held}) * dpdx + dt * g;
