@@ -1,6 +1,9 @@
 // IceSolver phases 3 and 6: face velocities with the pointwise implicit exchange at faces (with the
 // Riemann face pressure, at faces in compression the response to the pressure jump is at least the
-// two-shock solution's 1 / (W_L + W_R)), and the face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: mixture density),
+// two-shock solution's 1 / (W_L + W_R); beside a cell where the exchange holds a fluid to a solid
+// that dictates its velocity, at least the fluid's acoustic 1 / (Z_L + Z_R) times that share:
+// heldShare), and the face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R)
+// (rho: mixture density),
 // minus the two-shock Riemann dissipation W_L W_R / (W_L + W_R) (u_R - u_L) at faces in compression
 // (ice.face_pressure: riemann, the default for fluids alone),
 // plus the shock viscosity q = rho (q1 c |du| + q2 du^2) at faces in compression when asked
@@ -61,6 +64,47 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
   const double wL = x.z[l] - kShockImpedanceSlope * x.rho[l] * du, wR = x.z[r] - kShockImpedanceSlope * x.rho[r] * du;
   return 1.0 / (wL + wR);
 }
+
+// The acoustic impedance rho c = 1 / sqrt(v kappa) of material m in stored cell c; 0 where it is
+// absent (theta at most kPresentFraction) or has no finite compressibility (a held trace, kappa 0;
+// a cavitated liquid, kappa inf).
+double impedance(const MaterialState& m, std::int64_t c) {
+  const double t = m.theta.data()[c], v = m.spvol.data()[c], ka = m.kappa.data()[c];
+  return t > kPresentFraction && v > 0 && ka > 0 && std::isfinite(ka) ? 1.0 / std::sqrt(v * ka) : 0.0;
+}
+
+// The share of fluid r's velocity in stored cell c that the solids (external materials) dictate
+// and the pressure does not: h = a w.
+//   a = beta / (1 + beta): the part of the fluid's velocity the cell's implicit momentum exchange
+//       resets to the solids' in a step (the two-material solve of (theta_r / v_r) x_r + dt K
+//       theta_r theta_s (x_r - x_s) = (theta_r / v_r) x_r^L divides the velocity difference by
+//       1 + beta, beta = dt sum_s K_rs (theta_s v_r + theta_r v_s)); 1 for K = 1e15 wherever a
+//       solid is present, 0 where none is.
+//   w = Z_s / (Z_s + Z_r): the solids' weight in the velocity of a fluid-solid interface (the
+//       acoustic interaction of the two, Z = rho c, Z_s the solids' volume-weighted mean): ~1 for
+//       a gas against a metal (a wall to the gas: the velocity is the solid's, whatever the gas's
+//       pressure), ~0.03 for water against a soft rubber (the rubber moves with the water's
+//       pressure, and the held velocity carries its impulses).
+double heldShare(const std::vector<MaterialState>& mat, const double* K, int r, std::int64_t c, double dt) {
+  const MaterialState& f = mat[static_cast<std::size_t>(r)];
+  const double tr = f.theta.data()[c], vr = f.spvol.data()[c];
+  const int nm = static_cast<int>(mat.size());
+  double beta = 0, thetaS = 0, zS = 0;
+  for (int s = 0; s < nm; ++s) {
+    const MaterialState& m = mat[static_cast<std::size_t>(s)];
+    if (!m.external || !(m.mass.data()[c] > 0)) continue;
+    const double ts = m.theta.data()[c];
+    beta += dt * K[r * nm + s] * (ts * vr + tr * m.spvol.data()[c]);
+    thetaS += ts;
+    zS += ts * impedance(m, c);
+  }
+  if (!(beta > 0) || !(thetaS > 0)) return 0.0;
+  const double a = std::isfinite(beta) ? beta / (1.0 + beta) : 1.0;
+  zS /= thetaS;
+  const double zr = impedance(f, c);
+  const double w = zS + zr > 0 ? zS / (zS + zr) : 1.0;
+  return a * w;
+}
 }  // namespace
 
 void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x) {
@@ -94,6 +138,7 @@ void IceSolver::computeFaceVelocities() {
   const int nm = numMaterials();
   const double dt = dt_;
   const bool exch = anyK_ && nm > 1;
+  const bool exchSolids = exch && anyExternal_;  // fluids held by a solid's exchange (heldShare)
   const core::Box& sb = st_.press.box();
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   const double* p = st_.press.data();
@@ -128,6 +173,16 @@ void IceSolver::computeFaceVelocities() {
       double x[kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
       faceMaterialValues(st_.mat, cL, cR, th, vf);
       openSolidFaceExchange(st_, d, fi, th);
+      // Whether the face exchange leaves the fluids free of the solids here (no solid at the face,
+      // or an open face of the solids' face transport, solid_faces.h): their face velocities are
+      // then their own. Where it holds them (a face inside a solid; every face a solid's cells
+      // touch with solid_transport ice) the face velocity is the solid's, and the acoustic response
+      // below would only let the fluid leak through the exchange's weights: the shock slab's
+      // reflected plateau fell 0.25 % (its surface cells' gas is far below the plateau's
+      // pressure, held there by that lock).
+      bool freeOfSolids = exchSolids;
+      for (int r = 0; r < nm && freeOfSolids; ++r)
+        if (st_.mat[r].external && th[r] > 0) freeOfSolids = false;
       // The two-shock Riemann solution's response of the face velocity to the pressure jump,
       // 1 / (W_L + W_R) (times dx: per unit gradient), at faces in compression (0 elsewhere).
       double riemann = 0;
@@ -140,7 +195,28 @@ void IceSolver::computeFaceVelocities() {
         const double mL = P.m[cL], mR = P.m[cR];
         const double msum = mL + mR;
         const double t1 = msum > 0 ? (mL * P.u[cL] + mR * P.u[cR]) / msum : 0.5 * (P.u[cL] + P.u[cR]);
-        x[r] = t1 - std::max(dt * vf[r], riemann) * dpdx + dt * g;
+        // Beside a cell where the exchange holds this fluid to a solid that the fluid cannot move
+        // (a gas against a metal), its cell velocity is the solid's after every step: it carries
+        // none of the pressure gradient's past impulses, so dt v_r grad p is the only
+        // pressure-velocity coupling the face has, and it vanishes with dt. A velocity bias of
+        // the held cell (the gas in the piston's smeared surface cell moves with the copper) was
+        // then balanced by a pressure deficit ~ 1 / dt: the surface cells lost gas to the pure
+        // gas at every step, 0.75 / 1.81 / 2.30 % at the piston's CFL 0.4 / 0.1 / 0.05
+        // (docs/verification-coupled.md, "The error grew as the step shrank"). The response
+        // without memory is the acoustic (linearised Riemann) one, 1 / (Z_L + Z_R) with the
+        // fluid's own impedances, whatever dt; weighted by the held share h (heldShare, the larger
+        // of the two cells'), and never below dt v_r. Only at faces free of the solids (above).
+        // Its gain in the explicit pressure increment, (open face / theta_r) max(C^2, C / 2) with
+        // C the fluid's acoustic Courant number, is at most what dt v_r gives at C = 1 / 2.
+        double held = 0;
+        if (freeOfSolids && !st_.mat[r].external) {
+          const double h = std::max(heldShare(st_.mat, K_.data(), r, cL, dt), heldShare(st_.mat, K_.data(), r, cR, dt));
+          if (h > 0) {
+            const double zL = impedance(st_.mat[r], cL), zR = impedance(st_.mat[r], cR);
+            if (zL > 0 && zR > 0) held = h * dx / (zL + zR);
+          }
+        }
+        x[r] = t1 - std::max({dt * vf[r], riemann, held}) * dpdx + dt * g;
       }
       if (exch) faceExchange(nm, dt, K_.data(), th, vf, x);
       const int idx[3] = {i, j, k};

@@ -44,7 +44,7 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
       fs.insert(fs.end(), {{&m.mass, FieldKind::Mass}, {&m.vel, FieldKind::Velocity}, {&m.eint, FieldKind::Energy},
                            {&m.spvol, FieldKind::SpecificVolume}, {&m.theta, FieldKind::VolumeFraction}});
       mats.insert(mats.end(), {r, r, r, r, r});
-      if (riemannFacePressureOn()) {  // the face impedances (face pressure, stable step)
+      if (riemannFacePressureOn() || anyExternal_) {  // impedances: face pressure, stable step; beside solids the face velocity
         fs.push_back({&m.kappa, FieldKind::Scalar});
         mats.push_back(r);
       }
