@@ -6,8 +6,7 @@ only medians of interleaved rounds compare (docs/benchmarks.md).
 
     /usr/bin/python3 benchmarks/mpm/interleave.py OLD NEW ROUNDS FILTER
 """
-import csv
-import io
+import json
 import statistics
 import subprocess
 import sys
@@ -19,11 +18,9 @@ res = {}
 for _ in range(rounds):
     for tag, binary in (("old", old), ("new", new)):
         out = subprocess.run([binary, f"--benchmark_filter={filt}", "--benchmark_min_time=0.5",
-                              "--benchmark_format=csv"], capture_output=True, text=True, check=True).stdout
-        rows = list(csv.reader(io.StringIO(out[out.index("name,"):])))
-        for row in rows[1:]:
-            d = dict(zip(rows[0], row))
-            res.setdefault(d["name"], {}).setdefault(tag, []).append(float(d["real_time"]))
+                              "--benchmark_format=json"], capture_output=True, text=True, check=True).stdout
+        for b in json.loads(out)["benchmarks"]:
+            res.setdefault(b["name"], {}).setdefault(tag, []).append(float(b["real_time"]))
 for name, v in res.items():
     mo, mn = statistics.median(v["old"]), statistics.median(v["new"])
     print(f"{name:28s} old {mo:7.2f}  new {mn:7.2f}  new/old {mn / mo:.3f}   "
