@@ -22,6 +22,8 @@
 // these are the nodes' own sums (the same products regrouped): dt f_i . vbar_i for the work, and
 // m_i dv_i . vbar_i = the kinetic energy change of node i for a momentum increment.
 #include "mpm/cell/node_cell_operators.h"
+#include <utility>
+
 #include "mpm/solver/kernels.h"
 
 namespace mpmice::mpm {
@@ -33,7 +35,7 @@ void NodeCellOperators::meanNodeVelocity(const Field& a, const Field& b, double 
   const Grid& g = grid_;
   const int dim = mesh_.dim();
   const double* gm = g.mass.data();
-  for (int d = 0; d < 3; ++d) {
+  for (int d = 0; d < out.ncomp(); ++d) {  // the node vectors' components: the mesh's directions
     double* o = out.data(d);
     const double* va = a.data(d);
     const double* vb = b.data(d);
@@ -47,7 +49,7 @@ void NodeCellOperators::addCellVectorPower(int material, const std::vector<doubl
   const SolidCellState& cs = states_.at(static_cast<std::size_t>(material));
   const double* cm = cs.mass.data();  // owned cells: flat index = cells_.index
   const ParticleCells& pc = particleCells(material);
-  const double* vb[3] = {vbar.data(0), vbar.data(1), vbar.data(2)};
+  const auto vb = components(vbar);
   double* P = out.data();
   const auto [b, e] = p_.materialRange(material);
   const GridGeom geom = grid_.geom();
@@ -89,14 +91,15 @@ void NodeCellOperators::cellCouplingWork(int material, Field& out, double dt) {
   const bool stress = stressForceStamp_ == generation_ && stressForce_.size() == 5 * p_.size();
   if (!force && !stress) return;
   Grid& g = grid_;
-  if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
+  if (nodeScratch_.npts() == 0)
+    nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), g.velocityL.ncomp(), Grid::kGhost);
   Field& vb = nodeScratch_;
   meanNodeVelocity(g.velocity, g.velocityL, workFloor_, vb);
   if (force) addCellVectorPower(material, cellForce_[mi], vb, dt, out);
   if (!stress) return;
   // The mean-stress forces: -V_p S_p : L~_p, S = iso I + ex n n (V folded into iso and ex).
   const ParticleCells& pc = particleCells(material);
-  const double* vbd[3] = {vb.data(0), vb.data(1), vb.data(2)};
+  const auto vbd = components(std::as_const(vb));
   double* W = out.data();
   const auto [b, e] = p_.materialRange(material);
   const GridGeom geom = g.geom();

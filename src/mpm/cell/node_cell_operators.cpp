@@ -168,12 +168,13 @@ void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) {
   const CellCorners& cc = corners(nm, "cellLagrangianMomentum");
   corners(vL, "cellLagrangianMomentum");
   const double* nmd = nm.data();
-  const double* vLd[3] = {vL.data(0), vL.data(1), vL.data(2)};
+  const auto vLd = components(vL);
+  const int nv = vL.ncomp();  // the mesh's directions (the others' momentum is 0)
   core::forEach(cells_, [&](int i, int j, int k) {
     double p[3] = {0, 0, 0};
     cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
       const double w = share * nmd[n];
-      for (int d = 0; d < 3; ++d) p[d] += w * vLd[d][n];
+      for (int d = 0; d < nv; ++d) p[d] += w * vLd[d][n];
     });
     for (int d = 0; d < 3; ++d) out(i, j, k, d) = p[d];
   });
@@ -203,6 +204,7 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   const int dim = mesh_.dim();
   const auto [b, e] = p_.materialRange(material);
   const ParticleCells& pc = particleCells(material);
+  g.ensureRemap();
   g.remap.fill(0.0);
   // Each cell's vector once (the particles of a cell read it), 0 where the solid is absent (no
   // particle there reads it).
@@ -214,7 +216,7 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   });
   // Cells holding particles of m: each particle takes its mass share of its cell's vector and gives
   // it to its nodes with its own shape function (the weights of its particle-to-grid transfer).
-  double* r[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const auto r = components(g.remap);
   const GridGeom geom = g.geom();
   kernels::dispatch(shape_, dim, [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
@@ -264,7 +266,8 @@ void NodeCellOperators::applyCellVelocityIncrement(int material, const Field& dv
 void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp) {
   const SolidCellState& cs = current(material, "applyCellMomentumIncrement");
   if (dv_.npts() == 0) dv_ = Field("dv", Centering::Cell, cells_, 3, 0);
-  if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, grid_.box(), 3, Grid::kGhost);
+  if (nodeScratch_.npts() == 0)
+    nodeScratch_ = Field("node_scratch", Centering::Node, grid_.box(), grid_.velocityL.ncomp(), Grid::kGhost);
   Field& def = deficit_.at(material);
   if (def.npts() == 0) def = Field("kinetic_deficit", Centering::Cell, cells_, 1, 0);
   const Field& nm = nodeMass_[material];
@@ -274,7 +277,7 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
   const CellCorners& cc = corners(nm, "applyCellMomentumIncrement");
   corners(vL, "applyCellMomentumIncrement");
   const double* nmd = nm.data();
-  const double* vLd[3] = {vL.data(0), vL.data(1), vL.data(2)};
+  const auto vLd = components(vL);
   core::forEach(cells_, [&](int i, int j, int k) {
     const double m = cs.mass(i, j, k);
     double p[3] = {0, 0, 0};
@@ -361,8 +364,9 @@ void NodeCellOperators::cellToNodes(const Field& cellValue, double offset) {
 void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   cellToNodes(pcell, pRef);  // p - pRef at the nodes; the particle values are formed below
   Grid& g = grid_;
+  g.ensureRemap();
   g.remap.fill(0.0);
-  double* f[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+  const auto f = components(g.remap);
   const GridGeom geom = g.geom();
   const double* nv = nodeValue_.data(0);
   const double* nw = nodeValue_.data(1);
@@ -434,7 +438,8 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   const double cv = scene_.materials.at(material).specific_heat;
   const auto [b, e] = p_.materialRange(material);
   Grid& g = grid_;
-  if (nodeScratch_.npts() == 0) nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), 3, Grid::kGhost);
+  if (nodeScratch_.npts() == 0)
+    nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), g.velocityL.ncomp(), Grid::kGhost);
   while (nodeEnergy_.size() < energies.size())
     nodeEnergy_.emplace_back("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
   // Every cell's energy goes by the transpose of the node-to-cell average that made the cell mass

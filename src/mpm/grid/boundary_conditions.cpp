@@ -78,7 +78,7 @@ BoundaryConditions::BoundaryConditions(const std::array<core::BoundarySpec, 6>& 
 }
 
 void BoundaryConditions::apply(core::Field& v) const {
-  double* p[3] = {v.data(0), v.data(1), v.data(2)};
+  const auto p = components(v);
   for (std::size_t n = 0; n < idx_.size(); ++n) p[comp_[n]][idx_[n]] = 0.0;
   mirror(v, Parity::Vector);
 }

@@ -9,11 +9,11 @@ Grid::Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exter
     : exchange_(decomp, comm, Centering::Node, kGhost, exteriorGhosts), serial_(comm.size() == 1) {
   const core::Box b = decomp.storedBox(comm.rank(), Centering::Node, kGhost);
   mass = Field("mass", Centering::Node, b, 1, kGhost);
-  velocity = Field("velocity", Centering::Node, b, 3, kGhost);
-  velocityL = Field("velocityL", Centering::Node, b, 3, kGhost);
-  force = Field("force", Centering::Node, b, 3, kGhost);
-  externalForce = Field("externalForce", Centering::Node, b, 3, kGhost);
-  remap = Field("remap", Centering::Node, b, 3, kGhost);
+  const int nv = decomp.mesh().dim();  // vector components: the mesh's directions
+  velocity = Field("velocity", Centering::Node, b, nv, kGhost);
+  velocityL = Field("velocityL", Centering::Node, b, nv, kGhost);
+  force = Field("force", Centering::Node, b, nv, kGhost);
+  externalForce = Field("externalForce", Centering::Node, b, nv, kGhost);
   externalWork = Field("externalWork", Centering::Node, b, 1, kGhost);
   geom_.lo = b.lo;
   geom_.sy = b.length(0);
@@ -24,6 +24,10 @@ Grid::Grid(const core::Decomposition& decomp, const core::Comm& comm, bool exter
     geom_.invDx[d] = 1.0 / m.dx(d);
   }
   // Periodic directions are rejected by the solver, so one rank needs no exchange at all.
+}
+
+void Grid::ensureRemap() {
+  if (remap.npts() == 0) remap = Field("remap", Centering::Node, mass.box(), velocity.ncomp(), kGhost);
 }
 
 void Grid::sumAndFill(const std::vector<core::Field*>& fs) const {

@@ -2,13 +2,16 @@
 /// @brief The background grid of one rank: node fields over the rank's nodes plus one ghost
 /// layer, and their exchange with neighbouring ranks.
 ///
-/// Node fields (core::Field, three components for vectors whatever the dimension): mass,
+/// Node fields (core::Field; vectors with the mesh's dimension of components: 2D nodes hold no z
+/// component, which was an exact zero; components() gives null beyond them): mass,
 /// velocity (particle-to-grid velocity v_n), velocityL (Lagrangian velocity after the grid
 /// update), force (internal + body + loads), externalForce (the coupler's hook: e.g. ICE's
-/// pressure force, added in the grid update), externalWork (the work that force did) and remap (MUSL's remapped velocity). The ghost
+/// pressure force, added in the grid update), externalWork (the work that force did) and remap (MUSL's remapped velocity,
+/// the coupling's scratch; made on first use: ensureRemap). The ghost
 /// layer reaches one node beyond the mesh at its faces, so B-splines need no special stencil; with
 /// `exteriorGhosts` (the B-spline shapes) that exterior layer belongs to the rank at the face and
 /// is summed across ranks like any owned node (GhostExchange's ownExterior).
+#include <array>
 #include <vector>
 
 #include "core/field/field.h"
@@ -30,6 +33,19 @@ struct GridGeom {
   }
 };
 
+/// The component arrays of a node vector field for the hot loops (kernels take double* [3]):
+/// null beyond the field's components (the mesh's dimension).
+inline std::array<double*, 3> components(core::Field& f) {
+  std::array<double*, 3> c{nullptr, nullptr, nullptr};
+  for (int d = 0; d < f.ncomp() && d < 3; ++d) c[static_cast<std::size_t>(d)] = f.data(d);
+  return c;
+}
+inline std::array<const double*, 3> components(const core::Field& f) {
+  std::array<const double*, 3> c{nullptr, nullptr, nullptr};
+  for (int d = 0; d < f.ncomp() && d < 3; ++d) c[static_cast<std::size_t>(d)] = f.data(d);
+  return c;
+}
+
 class Grid {
  public:
   static constexpr int kGhost = 1;
@@ -42,6 +58,10 @@ class Grid {
   void sumAndFill(const std::vector<core::Field*>& fs) const;
   /// Owners' values into ghosts (no-op on one rank).
   void fill(const std::vector<core::Field*>& fs) const;
+
+  /// Allocates remap on first use (MUSL's velocity remap and the coupling's node-cell operators;
+  /// an uncoupled USL / USF run never holds it).
+  void ensureRemap();
 
   core::Field mass, velocity, velocityL, force, externalForce, remap;
   /// Work of externalForce in this step's grid update [J]: dt f_ext . (v_n + v_L) / 2 where the

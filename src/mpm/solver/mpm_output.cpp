@@ -35,7 +35,24 @@ std::string MpmOutput::write(const MpmSolver& solver) {
   const Grid& g = solver.grid();
   std::vector<const core::Field*> grid;
   if (wanted("mass")) grid.push_back(&g.mass);
-  if (wanted("velocity")) grid.push_back(&g.velocity);
+  if (wanted("velocity")) {
+    // The grid holds the mesh's components; the file holds three (an XDMF Vector), the others 0.
+    const core::Field& v = g.velocity;
+    if (v.ncomp() < 3) {
+      if (nodeVelocity3_.npts() != v.npts())
+        nodeVelocity3_ = core::Field(v.name(), v.centering(), v.box(), 3, v.nghost());
+      for (int c = 0; c < 3; ++c) {
+        double* to = nodeVelocity3_.data(c);
+        if (c < v.ncomp())
+          std::copy(v.data(c), v.data(c) + v.npts(), to);
+        else
+          std::fill(to, to + v.npts(), 0.0);
+      }
+      grid.push_back(&nodeVelocity3_);
+    } else {
+      grid.push_back(&v);
+    }
+  }
   if (!particles_) return writer_.writeStep(static_cast<int>(solver.stepCount()), solver.time(), grid);
 
   const std::size_t n = p.size();

@@ -36,6 +36,7 @@ class MpmOutput {
   std::vector<std::string> fields_;
   bool particles_;
   std::vector<double> materialId_, id_;  // int columns as doubles (reused)
+  core::Field nodeVelocity3_;  // 1D / 2D: the node velocity with its zero components, as written
 };
 
 }  // namespace mpmice::mpm

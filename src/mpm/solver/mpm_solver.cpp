@@ -109,7 +109,7 @@ double MpmSolver::nodeKinetic(const Field& v) const {
     const double w = nodeWeight_[static_cast<std::size_t>(k)];
     if (w == 0.0) continue;
     double v2 = 0;
-    for (int d = 0; d < 3; ++d) v2 += v.data(d)[k] * v.data(d)[k];
+    for (int d = 0; d < v.ncomp(); ++d) v2 += v.data(d)[k] * v.data(d)[k];  // 2D: no z (was + 0)
     e += w * 0.5 * m[k] * v2;
   }
   return e;
@@ -319,18 +319,18 @@ void MpmSolver::scatterToGrid(bool forces) {
   Grid& g = *grid_;
   // The ledger's particle sums at the start of the step, taken in the scatter pass.
   kernels::ParticleSums sums;
-  double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  const auto mom = components(g.velocity);
   double* mass = g.mass.data();
-  double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
+  const auto f = components(g.force);
   const GridGeom geom = g.geom();
   const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
   const bool loads = !scene_.loads.empty() || surfaceForces_;
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     const auto scatter = [&](const auto& src) {
       if (forces)
-        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom, grav, loads, f, &sums);
+        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), grav, loads, f.data(), &sums);
       else
-        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom, &sums);
+        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), &sums);
     };
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
@@ -347,7 +347,7 @@ void MpmSolver::scatterToGrid(bool forces) {
 
 void MpmSolver::finishParticlesToGrid() {
   Grid& g = *grid_;
-  double* mom[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  const auto mom = components(g.velocity);
   double* mass = g.mass.data();
   bcs_.fold(g.mass, Parity::Scalar);
   bcs_.fold(g.velocity, Parity::Vector);
@@ -491,15 +491,15 @@ void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
 void MpmSolver::computeInternalForces() {
   Grid& g = *grid_;
   if (scheme_->stressFirst) {
-    const double* vg[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
-    gridToParticlesAndStress<false, false>(vg, vg, vg);
+    const auto vg = components(g.velocity);
+    gridToParticlesAndStress<false, false>(vg.data(), vg.data(), vg.data());
   }
-  double* f[3] = {g.force.data(0), g.force.data(1), g.force.data(2)};
+  const auto f = components(g.force);
   const GridGeom geom = g.geom();
   const double grav[3] = {scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]};
   const bool loads = !scene_.loads.empty() || surfaceForces_;
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
-    kernels::internalForces<D>(src, p_, 0, p_.size(), geom, grav, loads, f);
+    kernels::internalForces<D>(src, p_, 0, p_.size(), geom, grav, loads, f.data());
   });
   finishInternalForces();
 }
@@ -564,8 +564,8 @@ void MpmSolver::addStressWork() {
   // "Energy budget"). Nodes below the acceleration floor do not move and take no work. What is left
   // in mpm_stress_integration is the body forces' work.
   Grid& g = *grid_;
-  const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
-  const double* vl[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
+  const auto vn = components(g.velocity);
+  const auto vl = components(g.velocityL);
   const double* mass = g.mass.data();
   const GridGeom geom = g.geom();
   const double dt = dt_, floor = accelFloor_;
@@ -594,27 +594,28 @@ void MpmSolver::gridToParticles() {
   Grid& g = *grid_;
   // The grid's kinetic energy now (after any coupling increments) against the particles' after.
   const double keFinal = nodeKinetic(g.velocityL);
-  const double* vL[3] = {g.velocityL.data(0), g.velocityL.data(1), g.velocityL.data(2)};
-  const double* vn[3] = {g.velocity.data(0), g.velocity.data(1), g.velocity.data(2)};
+  const auto vL = components(g.velocityL);
+  const auto vn = components(g.velocity);
   const GridGeom geom = g.geom();
   const int dim = scene_.mesh.dim();
   const std::size_t np = p_.size();
   switch (scheme_->kind) {
     case UpdateScheme::USF:
       withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
-        kernels::gridToParticles<D, true, true, false>(src, p_, 0, np, geom, vL, vn, vL, dt_, flip_);
+        kernels::gridToParticles<D, true, true, false>(src, p_, 0, np, geom, vL.data(), vn.data(), vL.data(), dt_, flip_);
       });
       stencilsValid_ = false;
       break;
     case UpdateScheme::USL:
-      gridToParticlesAndStress<true, true>(vL, vn, vL);
+      gridToParticlesAndStress<true, true>(vL.data(), vn.data(), vL.data());
       break;
     case UpdateScheme::MUSL: {
+      g.ensureRemap();
       g.remap.fill(0.0);
-      double* mom[3] = {g.remap.data(0), g.remap.data(1), g.remap.data(2)};
+      const auto mom = components(g.remap);
       withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
-        kernels::gridToParticles<D, true, false, false>(src, p_, 0, np, geom, vL, vn, vL, dt_, flip_);
-        kernels::momentumToGrid<D>(src, p_, 0, np, geom, mom);
+        kernels::gridToParticles<D, true, false, false>(src, p_, 0, np, geom, vL.data(), vn.data(), vL.data(), dt_, flip_);
+        kernels::momentumToGrid<D>(src, p_, 0, np, geom, mom.data());
       });
       bcs_.fold(g.remap, Parity::Vector);
       g.sumAndFill({&g.remap});
@@ -623,7 +624,7 @@ void MpmSolver::gridToParticles() {
         for (std::int64_t k = 0; k < g.numNodes(); ++k) mom[d][k] = m[k] > massFloor_ ? mom[d][k] / m[k] : 0.0;
       applyBC(g.remap);
       const double* vr[3] = {mom[0], mom[1], mom[2]};
-      gridToParticlesAndStress<false, true>(vL, vn, vr);
+      gridToParticlesAndStress<false, true>(vL.data(), vn.data(), vr);
       break;
     }
   }

@@ -120,7 +120,7 @@ void compareWithFullBlock(const Case& c) {
   double mScale = 0, vScale = 0;
   core::forEach(mesh.nodeBox(), [&](int i, int j, int k) {
     mScale = std::max(mScale, half.grid().mass(i, j, k));
-    for (int d = 0; d < 3; ++d) vScale = std::max(vScale, std::fabs(half.grid().velocity(i, j, k, d)));
+    for (int d = 0; d < c.dim; ++d) vScale = std::max(vScale, std::fabs(half.grid().velocity(i, j, k, d)));
   });
   ASSERT_GT(mScale, 0.0);
   core::forEach(mesh.nodeBox(), [&](int i, int j, int k) {

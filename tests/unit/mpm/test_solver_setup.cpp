@@ -435,6 +435,31 @@ TEST(ParticleLayout, ThreeDimensionalAndPlasticScenesStoreTheirColumns) {
   EXPECT_TRUE(plastic.particles().F[8].empty());
 }
 
+TEST(GridLayout, NodeVectorsHoldTheMeshsDirections) {
+  // A 2D grid keeps no z component (it was an exact zero): 5 node vectors x 8 B per node less.
+  MpmSolver solver(blockScene(), self());
+  const Grid& g = solver.grid();
+  for (const core::Field* f : {&g.velocity, &g.velocityL, &g.force, &g.externalForce})
+    EXPECT_EQ(f->ncomp(), 2) << f->name();
+  EXPECT_EQ(components(g.velocity)[2], nullptr);
+  // remap (MUSL, the coupling's node-cell operators) is made on first use: a USL run never holds it.
+  solver.advance();
+  EXPECT_EQ(g.remap.npts(), 0);
+  core::Scene musl = blockScene();
+  musl.mpm.update = "musl";
+  MpmSolver solverMusl(musl, self());
+  solverMusl.advance();
+  EXPECT_EQ(solverMusl.grid().remap.ncomp(), 2);
+  EXPECT_EQ(solverMusl.grid().remap.npts(), solverMusl.grid().velocity.npts());
+  core::Scene s3 = blockScene();
+  s3.mesh = core::Mesh(3, {0, 0, 0}, {0.25, 0.25, 0.25}, {8, 8, 4});
+  s3.geometry[0].shape.lo = {0.5, 0.5, 0.25};
+  s3.geometry[0].shape.hi = {1.5, 1.0, 0.75};
+  s3.geometry[0].particles_per_cell = {2, 2, 2};
+  MpmSolver solver3(s3, self());
+  EXPECT_EQ(solver3.grid().velocity.ncomp(), 3);
+}
+
 TEST(ParticleLayout, SurfaceForcesStoreTheirColumnsAsZeros) {
   MpmSolver solver(blockScene(), self());
   solver.enableSurfaceForces();
