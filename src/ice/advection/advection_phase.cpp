@@ -53,8 +53,11 @@ inline double positivityBlend(const double* R, double eThermal, double vD) {
   double b = 1.0;
   const double C = (1.0 - kMinRemainderShare) * mr * eThermal;
   const double A = R[kRemE];
-  const double B = R[kRemU2] + (R[kRemUx] * R[kRemUx] + R[kRemUy] * R[kRemUy] + R[kRemUz] * R[kRemUz]) / mr;
-  if (C > 0 && A + 0.5 * B > C) b = std::min(b, 2.0 * C / (A + std::sqrt(A * A + 2.0 * B * C)));
+  const double P2 = R[kRemUx] * R[kRemUx] + R[kRemUy] * R[kRemUy] + R[kRemUz] * R[kRemUz];
+  if (C > 0 && (A + 0.5 * R[kRemU2] - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
+    const double B = R[kRemU2] + P2 / mr;
+    b = std::min(b, 2.0 * C / (A + std::sqrt(A * A + 2.0 * B * C)));
+  }
   if (C > 0 && -A > C) b = std::min(b, C / -A);
   const double Cv = (1.0 - kMinRemainderShare) * mr * vD;
   if (Cv > 0 && std::abs(R[kRemV]) > Cv) b = std::min(b, Cv / std::abs(R[kRemV]));
@@ -360,7 +363,7 @@ void IceSolver::advectFluids() {
             const double w = lam * std::abs(F);
             R[kRemMass] -= w;
             R[kRemE] += w * (f.e - eL[D]);
-            for (int q = 0; q < 3; ++q) {
+            for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
               const double du = f.u[q] - u[q][D];
               R[kRemU2] += w * du * du;
               R[kRemUx + q] += w * du;
