@@ -67,5 +67,11 @@ inline constexpr double kMaxVolumeChange = 0.5;
 /// Lagrangian energy fix keeps e_L). Measured from e_cold, not from e = 0: a Mie-Gruneisen liquid
 /// with a reference temperature has e = 0 at T0 (slides_underwater_foam_water). No test pins the value.
 inline constexpr double kMinEnergyShare = 0.1;
+/// The share of its specific thermal energy (e - e_cold at the donor's density) and specific
+/// volume that the part of a donor cell's fluid staying in the cell keeps at least after the
+/// outflow through all its faces (advection_phase.cpp, the positivity blend: the outgoing face
+/// values are blended toward the donor's own where the limited ones would take more). No test
+/// pins the value (any share in (0, 1) keeps e and v positive by construction).
+inline constexpr double kMinRemainderShare = 0.1;
 
 }  // namespace mpmice::ice

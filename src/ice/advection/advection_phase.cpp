@@ -7,7 +7,10 @@
 // The reconstructed face volume fractions are rescaled so that they sum, over the fluids, to the
 // donor-cell sum: uniform pressure and velocity stay uniform across material interfaces.
 // Donors whose outflows over all faces would exceed 90% of their mass have them scaled down
-// (positivity; conservative). Internal energy = total - kinetic; where round-off of that difference would lose more than 90%
+// (positivity; conservative). The part of a donor's fluid that stays keeps at least
+// kMinRemainderShare of its specific thermal energy and volume: where the limited face values of
+// its outgoing faces would take more (a trace whose neighbours carry larger e or v), they are
+// blended toward the donor's own values (the positivity blend, below; conservative). Internal energy = total - kinetic; where round-off of that difference would lose more than 90%
 // of the thermal energy (e - e_cold) advected directly (strong rarefactions), the direct value is used.
 // Second order with the Riemann face pressure: the face's (specific volume, internal energy) pair
 // is kept between the isentropes of its two cells where both hold the material alone
@@ -28,6 +31,38 @@ using core::forEach;
 namespace {
 using namespace advected;
 constexpr int kNumAcc = kCount;
+// The positivity blend's per-donor sums (AdvectionScratch::Material::remainder): the mass left
+// after the outflows, and over the outgoing faces (w = the scaled outgoing mass flux, D the donor's
+// Lagrangian values) sum w (e_f - e_D), sum w |u_f - u_D|^2, sum w (u_f - u_D) (3), sum w (v_f - v_D).
+enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRemSums };
+
+// The positivity blend of one donor (the largest b in [0, 1] with face values q_D + b (q_f - q_D)
+// on its outgoing faces that keeps its remainder admissible). The remainder (mass m_r, momentum,
+// total energy after the outflows) has the internal energy
+//   I(b) = m_r e_D - b sum w (e_f - e_D) - b^2 / 2 (sum w |du|^2 + |sum w du|^2 / m_r)
+// (the terms in u_D cancel: Galilean invariance), concave in b, and m_r e_D at b = 0; its volume
+// m_r v_D - b sum w (v_f - v_D) is linear. Both are kept above kMinRemainderShare of m_r e_D
+// (thermal: e - e_cold at the donor's density) and m_r v_D. Every inflow carries a positive
+// (e_f, v_f) (the limited reconstruction stays within the neighbours' values, the entropy bound
+// between two isentropes), and the internal energy of a sum of parts is at least the sum of
+// theirs (|P|^2 / 2m is convex and of degree 1), so the cell's e and v after advection are
+// positive by construction, whatever the face values.
+inline double positivityBlend(const double* R, double eThermal, double vD) {
+  const double mr = R[kRemMass];
+  if (!(mr > 0)) return 1.0;
+  double b = 1.0;
+  const double C = (1.0 - kMinRemainderShare) * mr * eThermal;
+  const double A = R[kRemE];
+  const double P2 = R[kRemUx] * R[kRemUx] + R[kRemUy] * R[kRemUy] + R[kRemUz] * R[kRemUz];
+  if (C > 0 && (A + 0.5 * R[kRemU2] - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
+    const double B = R[kRemU2] + P2 / mr;
+    b = std::min(b, 2.0 * C / (A + std::sqrt(A * A + 2.0 * B * C)));
+  }
+  if (C > 0 && -A > C) b = std::min(b, C / -A);
+  const double Cv = (1.0 - kMinRemainderShare) * mr * vD;
+  if (Cv > 0 && std::abs(R[kRemV]) > Cv) b = std::min(b, Cv / std::abs(R[kRemV]));
+  return b;
+}
 
 // The face reconstruction, chosen once per advection (the face loops are instantiated for each):
 // donor cell (first order) or the limited linear one with limiter L.
@@ -127,7 +162,10 @@ void IceSolver::advectFluids() {
       adv_.mat[r].eint.resize(npts);
     }
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
+    adv_.blend = core::Field("positivity_blend", core::Centering::Cell, sb, nm, kGhost);
   }
+  for (int r = 0; r < nm; ++r)
+    if (!st_.mat[r].external) adv_.mat[static_cast<std::size_t>(r)].remainder.resize(npts * kRemSums);
 
   core::Field& outScale = adv_.outflowScale;
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
@@ -222,8 +260,12 @@ void IceSolver::advectFluids() {
       accumulators(m, a);
       const double *e = m.eintL.data(), *v = m.spvolL.data();
       const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+      double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
       for (const std::int64_t c : ownedCells_) {
         const double mass = a[kMass][c];
+        double* R = rem + c * kRemSums;
+        R[kRemMass] = mass;
+        for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
         double ke = 0;
         for (int d = 0; d < 3; ++d) {
           a[kMomX + d][c] = mass * u[d][c];
@@ -250,8 +292,28 @@ void IceSolver::advectFluids() {
         isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, am.isenGamma, am.isenPi);
       }
 
+    // The face values of one fluid at one face: velocity, specific volume, internal energy (the
+    // entropy-bounded pair at second order, above).
+    struct FaceState {
+      double u[3], v, e;
+    };
+    auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
+                         const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
+      FaceState f;
+      for (int q = 0; q < 3; ++q) f.u[q] = q < dim ? face(u[q]) : u[q][face.D];
+      f.v = face(vL);
+      f.e = face(eL);
+      if constexpr (Second) {
+        const std::int64_t O = face.D == cL ? cR : cL;
+        if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O])) f.e = entropyBounded(f.e, f.v, face.D, O, eL, vL, isG, isP);
+      } else {
+        (void)cR, (void)th, (void)isG, (void)isP;
+      }
+      return f;
+    };
+
     // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
-    // the owned cells on both sides.
+    // the owned cells on both sides; each owned donor's sums for the positivity blend.
     for (int d = 0; d < dim; ++d) {
       const double dx = mesh_.dx(d);
       const std::int64_t sd = strides[d];
@@ -267,6 +329,7 @@ void IceSolver::advectFluids() {
         const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
         const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
         const double* th = m.theta.data();
+        double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
         double* a[kNumAcc];
         accumulators(m, a);
         forEach(fb, [&](int i, int j, int k) {
@@ -278,23 +341,108 @@ void IceSolver::advectFluids() {
           const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
           const double lam = F > 0 ? sc[cL] : sc[cR];
           const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
+          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
           double fl[kNumAcc];
           double ke = 0;
           for (int q = 0; q < 3; ++q) {
-            const double uq = q < dim ? face(u[q]) : u[q][face.D];
-            fl[kMomX + q] = F * uq;
-            ke += uq * uq;
-          }
-          const double vf = face(vL);
-          double ef = face(eL);
-          if constexpr (Second) {
-            const std::int64_t O = face.D == cL ? cR : cL;
-            if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O])) ef = entropyBounded(ef, vf, face.D, O, eL, vL, isG, isP);
+            fl[kMomX + q] = F * f.u[q];
+            ke += f.u[q] * f.u[q];
           }
           fl[kMass] = F;
-          fl[kEnergy] = F * (ef + 0.5 * ke);
-          fl[kVolume] = F * vf;
-          fl[kEint] = F * ef;
+          fl[kEnergy] = F * (f.e + 0.5 * ke);
+          fl[kVolume] = F * f.v;
+          fl[kEint] = F * f.e;
+          for (int q = 0; q < kNumAcc; ++q) {
+            const double v = lam * fl[q];
+            if (ownL) a[q][cL] -= v;
+            if (ownR) a[q][cR] += v;
+          }
+          const std::int64_t D = face.D;
+          if (D == cL ? ownL : ownR) {
+            double* R = rem + D * kRemSums;
+            const double w = lam * std::abs(F);
+            R[kRemMass] -= w;
+            R[kRemE] += w * (f.e - eL[D]);
+            for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
+              const double du = f.u[q] - u[q][D];
+              R[kRemU2] += w * du * du;
+              R[kRemUx + q] += w * du;
+            }
+            R[kRemV] += w * (f.v - vL[D]);
+          }
+        });
+      }
+    }
+
+    // The positivity blend of every owned donor (positivityBlend), then, at the outgoing faces of
+    // the few donors with a blend below 1, the difference between the blended fluxes and those
+    // applied above (the same on both sides of the face: conservative).
+    core::Field& blend = adv_.blend;
+    blend.fill(1.0);
+    bool anyBlend = false;
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      const double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
+      const double *eL = m.eintL.data(), *vL = m.spvolL.data();
+      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+      double* bl = blend.data(r);
+      for (const std::int64_t c : ownedCells_) {
+        const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
+        bl[c] = positivityBlend(rem + c * kRemSums, eL[c] - ec, vL[c]);
+        if (bl[c] < 1.0) {
+          anyBlend = true;
+          ++positivityBlends_;
+        }
+      }
+    }
+    anyBlend = comm_.max(anyBlend ? 1.0 : 0.0) > 0;
+    if (!anyBlend) return;
+    ghosts_->fill(blend);
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh_.dx(d);
+      const std::int64_t sd = strides[d];
+      const core::Box fb = owned_.faces(d);
+      for (int r = 0; r < nm; ++r) {
+        MaterialState& m = st_.mat[r];
+        if (m.external) continue;
+        const double* Fm = adv_.mat[r].massFlux[d].data();
+        const double* sc = outScale.data(r);
+        const double* bl = blend.data(r);
+        const double* uf = m.velFace[d].data();
+        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
+                     *vL = m.spvolL.data();
+        const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
+        const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
+        const double* th = m.theta.data();
+        double* a[kNumAcc];
+        accumulators(m, a);
+        forEach(fb, [&](int i, int j, int k) {
+          const std::int64_t fi = fb.index(i, j, k);
+          const double F = Fm[fi];
+          if (F == 0) return;
+          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+          const std::int64_t D = F > 0 ? cL : cR;
+          const double b = bl[D];
+          if (!(b < 1.0)) return;
+          const int id = d == 0 ? i : (d == 1 ? j : k);
+          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+          const double lam = sc[D];
+          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
+          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
+          double fl[kNumAcc];
+          double ke1 = 0, keB = 0;
+          for (int q = 0; q < 3; ++q) {
+            const double ub = u[q][D] + b * (f.u[q] - u[q][D]);
+            fl[kMomX + q] = F * (ub - f.u[q]);
+            ke1 += f.u[q] * f.u[q];
+            keB += ub * ub;
+          }
+          const double eb = eL[D] + b * (f.e - eL[D]), vb = vL[D] + b * (f.v - vL[D]);
+          fl[kMass] = 0.0;
+          fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
+          fl[kVolume] = F * (vb - f.v);
+          fl[kEint] = F * (eb - f.e);
           for (int q = 0; q < kNumAcc; ++q) {
             const double v = lam * fl[q];
             if (ownL) a[q][cL] -= v;

@@ -152,6 +152,9 @@ class IceSolver {
   [[nodiscard]] bool semiImplicit() const { return semiImplicit_; }
   /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
   [[nodiscard]] long energyFallbacks() const { return fallbacks_; }
+  /// Donor cells (per material and step, this rank's) whose outgoing face values advection
+  /// blended toward their own to keep e and v positive (advection_phase.cpp, positivityBlend).
+  [[nodiscard]] long positivityBlends() const { return positivityBlends_; }
   /// The energy those fallbacks added (energy_audit.h; the health check reads it).
   [[nodiscard]] const EnergyAudit& energyAudit() const { return audit_; }
 
@@ -227,7 +230,7 @@ class IceSolver {
   std::vector<Source> sources_;
   core::StepCollapse collapse_{0.0};  // time.dt_collapse_fraction (step())
   double t_ = 0, dt_ = 0;
-  long nsteps_ = 0, fallbacks_ = 0;
+  long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
   EnergyAudit audit_;
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)

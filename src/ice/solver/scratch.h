@@ -42,9 +42,13 @@ struct AdvectionScratch {
     /// the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
     std::vector<double> isenGamma, isenPi;
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
+    /// Per stored cell, kRemSums values: the donor's mass left after its outflows, and the
+    /// outflows' sums the positivity blend needs (advection_phase.cpp).
+    std::vector<double> remainder;
   };
   std::vector<Material> mat;
   core::Field outflowScale;  // one component per material: scale of each donor's outflow
+  core::Field blend;         // one component per material: each donor's face-value blend (1: none)
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
   std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
 };

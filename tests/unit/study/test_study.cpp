@@ -453,6 +453,9 @@ TEST(References, PistonExactAnswerFromTheScene) {
   EXPECT_DOUBLE_EQ(e.h0, 0.4);
   EXPECT_DOUBLE_EQ(e.hL0, 0.2);
   EXPECT_DOUBLE_EQ(e.M, 8900 * 0.4);
+  // both gas columns at the quiet state, 101325 / (0.4 x 717.5 x 300) kg/m^3 over 0.6 m (their
+  // inertia: a third of it moves with the piston)
+  EXPECT_NEAR(e.gasMass, 101325.0 / (0.4 * 717.5 * 300) * 0.6, 1e-12);
   EXPECT_EQ(e.gas, "air");
   const PistonExact x = pistonExact(e, 0.02);
   EXPECT_NEAR(x.s, 0.19639, 1e-5);

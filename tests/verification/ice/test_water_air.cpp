@@ -199,15 +199,20 @@ TEST(IceWaterAir, RealDensityRatioCompletesAndConverges) {
 // same runs complete and converge; measured L1(rho) 33.18 / 20.59 / 12.96 / 8.17 kg/m^2 at 100 /
 // 200 / 400 / 800 cells (order 0.67), bounds 5 % above at 200 and 400 (the explicit default is
 // 9.09 / 5.74: the semi-implicit step runs at a water acoustic CFL of 2-4).
-TEST(IceWaterAir, SemiImplicitVanLeerCompletesWithWorkAndStopsWithout) {
+// Since the positivity blend of the advection (3 Dec 2026, src/ice/advection/advection_phase.cpp:
+// the limited face values of a donor's outgoing faces may no longer take more than 90 % of its
+// specific energy or volume), the fixed-energy run completes too: L1(rho) 18.30 at 200 cells
+// (bound 5 % above); before, air below 0 K at step 17-32.
+TEST(IceWaterAir, SemiImplicitVanLeerCompletesWithAndWithoutWork) {
   test::TubeOptions o;
   o.pressure = "semi_implicit";
   o.limiter = "van_leer";
   const double Y = core::IceOptions{}.trace_mass_fraction;
   const RealRatioRun fixed = runRealRatio(200, Y, o);
-  std::printf("  semi-implicit, van Leer, fixed_energy, 200 cells: %s\n",
-              fixed.completed ? "completed" : fixed.error.c_str());
-  EXPECT_FALSE(fixed.completed) << "the stop this test documents is gone: update docs/ice.md";
+  std::printf("  semi-implicit, van Leer, fixed_energy, 200 cells: %s, L1(rho) %.4g kg/m^2\n",
+              fixed.completed ? "completed" : fixed.error.c_str(), fixed.l1);
+  EXPECT_TRUE(fixed.completed) << fixed.error;
+  EXPECT_LT(fixed.l1, 19.2);
   o.equilibrium = "with_work";
   const std::vector<int> ns = {200, 400};
   const std::vector<double> bound = {21.6, 13.6};
