@@ -1,7 +1,9 @@
 // Shape functions: partition of unity, zero gradient sum, linear reproduction, registry errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <vector>
 
 #include "mpm/shape/shape_function.h"
 
@@ -52,6 +54,20 @@ TEST(ShapeFunction, GimpPartitionOfUnity) {
 }
 TEST(ShapeFunction, BSpline2PartitionOfUnity) { checkShape<BSpline2Shape>(0); }
 TEST(ShapeFunction, BSpline3PartitionOfUnity) { checkShape<BSpline3Shape>(0); }
+
+TEST(ShapeFunction, FloorIndexIsFloorForGridCoordinates) {
+  // Integers, values just below and above them, negatives (B-spline stencils start half a cell
+  // below the first node), and random coordinates: the same integer as std::floor.
+  std::vector<double> xs = {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 2.999999999999999, 3.0, -2.000000000000001, 1e9, -1e9};
+  for (int i = -5; i <= 5; ++i) {
+    xs.push_back(std::nextafter(static_cast<double>(i), -1e300));
+    xs.push_back(std::nextafter(static_cast<double>(i), 1e300));
+  }
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-600.0, 600.0);
+  for (int k = 0; k < 10000; ++k) xs.push_back(u(rng));
+  for (double x : xs) EXPECT_EQ(floorIndex(x), static_cast<int>(std::floor(x))) << x;
+}
 
 TEST(ShapeFunction, RegistryByName) {
   for (const auto& n : shapeFunctionNames()) EXPECT_EQ(toString(parseShapeFunction(n)), n);
