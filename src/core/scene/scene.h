@@ -175,7 +175,7 @@ struct TimeSpec {
   double dt_max = 1e30;
   double dt_min = 0;        // a step below this stops the run with an error
   double dt_initial = 0;    // 0 = from the CFL condition
-  double dt_collapse_fraction = 1e-6;  // a stable step below this x the first one stops the run (0 = off)
+  double dt_collapse_fraction = 1e-3;  // a stable step below this x the first one stops the run (0 = off)
   long max_steps = 0;       // 0 = no limit
   bool operator==(const TimeSpec&) const = default;
 };

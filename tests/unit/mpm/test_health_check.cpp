@@ -146,7 +146,7 @@ TEST(MpmHealthCheck, ACollapsedTimeStepStopsTheRunNamingTheParticleAndTheLimit) 
   }
   const auto& p = s.particles();
   const double x[3] = {p.x[0][4], p.x[1][4], p.x[2][4]};
-  expectNames(msg, {"time step collapsed", "(step 2)", "below time.dt_collapse_fraction = 1e-06",
+  expectNames(msg, {"time step collapsed", "(step 2)", "below time.dt_collapse_fraction = 0.001",
                     "the MPM CFL bound", "particle " + std::to_string(p.id[4]) + " of solid 'block'",
                     "x = " + core::formatPoint(x, 2) + " m", "|v| = 1e+12 m/s"});
 }
