@@ -31,7 +31,7 @@ using core::forEach;
 namespace {
 using namespace advected;
 constexpr int kNumAcc = kCount;
-// The positivity blend's per-donor sums (AdvectionScratch::Material::remainder): the mass left
+// The positivity blend's per-donor sums (AdvectionScratch::remainder, two slabs): the mass left
 // after the outflows, and over the outgoing faces (w = the scaled outgoing mass flux, D the donor's
 // Lagrangian values) sum w (e_f - e_D), sum w |u_f - u_D|^2, sum w (u_f - u_D) (3), sum w (v_f - v_D).
 enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRemSums };
@@ -162,10 +162,7 @@ void IceSolver::advectFluids() {
       adv_.mat[r].eint.resize(npts);
     }
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
-    adv_.blend = core::Field("positivity_blend", core::Centering::Cell, sb, nm, kGhost);
   }
-  for (int r = 0; r < nm; ++r)
-    if (!st_.mat[r].external) adv_.mat[static_cast<std::size_t>(r)].remainder.resize(npts * kRemSums);
 
   core::Field& outScale = adv_.outflowScale;
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
@@ -260,12 +257,8 @@ void IceSolver::advectFluids() {
       accumulators(m, a);
       const double *e = m.eintL.data(), *v = m.spvolL.data();
       const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
-      double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
       for (const std::int64_t c : ownedCells_) {
         const double mass = a[kMass][c];
-        double* R = rem + c * kRemSums;
-        R[kRemMass] = mass;
-        for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
         double ke = 0;
         for (int d = 0; d < 3; ++d) {
           a[kMomX + d][c] = mass * u[d][c];
@@ -312,141 +305,175 @@ void IceSolver::advectFluids() {
       return f;
     };
 
+    // The pointers the flux passes (pass 2 and the blend's) read and write for one fluid at the
+    // faces normal to one direction.
+    struct FluxPtrs {
+      core::Box fb;  // the faces normal to the direction that bound the owned cells
+      std::int64_t sd;
+      double dx;
+      const double *Fm, *sc, *uf;                    // mass flux, outflow scale, face velocity
+      const double *u[3], *eL, *vL, *isG, *isP, *th;  // the face values' sources
+      double* a[kNumAcc];
+    };
+    auto fluxPtrs = [&](int d, int r) {
+      MaterialState& m = st_.mat[r];
+      AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
+      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(r),
+                 m.velFace[d].data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
+                 m.spvolL.data(), Second ? am.isenGamma.data() : nullptr, Second ? am.isenPi.data() : nullptr,
+                 m.theta.data(), {}};
+      accumulators(m, P.a);
+      return P;
+    };
+
     // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
-    // the owned cells on both sides; each owned donor's sums for the positivity blend.
-    for (int d = 0; d < dim; ++d) {
-      const double dx = mesh_.dx(d);
-      const std::int64_t sd = strides[d];
-      const core::Box fb = owned_.faces(d);
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        const double* Fm = adv_.mat[r].massFlux[d].data();
-        const double* sc = outScale.data(r);
-        const double* uf = m.velFace[d].data();
-        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
-                     *vL = m.spvolL.data();
-        const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
-        const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
-        const double* th = m.theta.data();
-        double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
-        double* a[kNumAcc];
-        accumulators(m, a);
-        forEach(fb, [&](int i, int j, int k) {
-          const std::int64_t fi = fb.index(i, j, k);
-          const double F = Fm[fi];
-          if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-          const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = F > 0 ? sc[cL] : sc[cR];
-          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
-          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
-          double fl[kNumAcc];
-          double ke = 0;
-          for (int q = 0; q < 3; ++q) {
-            fl[kMomX + q] = F * f.u[q];
-            ke += f.u[q] * f.u[q];
-          }
-          fl[kMass] = F;
-          fl[kEnergy] = F * (f.e + 0.5 * ke);
-          fl[kVolume] = F * f.v;
-          fl[kEint] = F * f.e;
-          for (int q = 0; q < kNumAcc; ++q) {
-            const double v = lam * fl[q];
-            if (ownL) a[q][cL] -= v;
-            if (ownR) a[q][cR] += v;
-          }
-          const std::int64_t D = face.D;
-          if (D == cL ? ownL : ownR) {
-            double* R = rem + D * kRemSums;
-            const double w = lam * std::abs(F);
-            R[kRemMass] -= w;
-            R[kRemE] += w * (f.e - eL[D]);
-            for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
-              const double du = f.u[q] - u[q][D];
-              R[kRemU2] += w * du * du;
-              R[kRemUx + q] += w * du;
+    // the owned cells on both sides; each owned donor's sums for the positivity blend. One fluid
+    // at a time, sweeping the slabs of cells along the last direction (top: rows in 2D, planes in
+    // 3D) with the faces inside a slab before its low faces in top; every cell still receives its
+    // faces' terms in the order x low, x high, y low, y high, z low, z high (the order of a sweep
+    // per direction), and a slab's sums are complete once the faces above it are done: only two
+    // slabs of sums are kept.
+    const int top = dim - 1;
+    std::int64_t slabSize = 1;
+    for (int q = 0; q < top; ++q) slabSize *= owned_.length(q);
+    adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
+    adv_.blends.clear();
+    double* rem = adv_.remainder.data();
+    auto remOf = [&](int ci, int cj, int ck) {  // an owned cell's sums
+      const int c[3] = {ci, cj, ck};
+      std::int64_t at = c[top] & 1;
+      for (int q = top - 1; q >= 0; --q) at = at * owned_.length(q) + (c[q] - owned_.lo[q]);
+      return rem + at * kRemSums;
+    };
+    auto slab = [&](int s) {  // the owned cells with index s in top
+      core::Box b = owned_;
+      b.lo[top] = b.hi[top] = s;
+      return b;
+    };
+    auto pass2Face = [&](const FluxPtrs& P, int d, int i, int j, int k) {
+      const std::int64_t fi = P.fb.index(i, j, k);
+      const double F = P.Fm[fi];
+      if (F == 0) return;
+      const std::int64_t cR = sb.index(i, j, k), cL = cR - P.sd;
+      const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
+      const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+      const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
+      const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
+      const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
+      double fl[kNumAcc];
+      double ke = 0;
+      for (int q = 0; q < 3; ++q) {
+        fl[kMomX + q] = F * f.u[q];
+        ke += f.u[q] * f.u[q];
+      }
+      fl[kMass] = F;
+      fl[kEnergy] = F * (f.e + 0.5 * ke);
+      fl[kVolume] = F * f.v;
+      fl[kEint] = F * f.e;
+      for (int q = 0; q < kNumAcc; ++q) {
+        const double v = lam * fl[q];
+        if (ownL) P.a[q][cL] -= v;
+        if (ownR) P.a[q][cR] += v;
+      }
+      const std::int64_t D = face.D;
+      if (D == cL ? ownL : ownR) {
+        double* R = D == cL ? remOf(i - (d == 0), j - (d == 1), k - (d == 2)) : remOf(i, j, k);
+        const double w = lam * std::abs(F);
+        R[kRemMass] -= w;
+        R[kRemE] += w * (f.e - P.eL[D]);
+        for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
+          const double du = f.u[q] - P.u[q][D];
+          R[kRemU2] += w * du * du;
+          R[kRemUx + q] += w * du;
+        }
+        R[kRemV] += w * (f.v - P.vL[D]);
+      }
+    };
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      FluxPtrs P[3];
+      for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
+      const double* ms = m.mass.data();
+      const double *eL = m.eintL.data(), *vL = m.spvolL.data();
+      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+      auto row = [&](int d, int j, int k, int ihi) {  // the faces normal to d along x at (j, k)
+        for (int i = owned_.lo[0]; i <= ihi; ++i) pass2Face(P[d], d, i, j, k);
+      };
+      for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
+        if (s <= owned_.hi[top]) {
+          forEach(slab(s), [&](int i, int j, int k) {  // the mass before advection, no outflow yet
+            double* R = remOf(i, j, k);
+            R[kRemMass] = ms[sb.index(i, j, k)];
+            for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
+          });
+          if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
+          if (dim == 3) {
+            for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+              row(0, j, s, owned_.hi[0] + 1);
+              row(1, j, s, owned_.hi[0]);
             }
-            R[kRemV] += w * (f.v - vL[D]);
+            row(1, owned_.hi[1] + 1, s, owned_.hi[0]);
+          }
+        }
+        forEach(slab(s), [&](int i, int j, int k) { pass2Face(P[top], top, i, j, k); });  // low faces of s in top
+        if (s == owned_.lo[top]) continue;
+        // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
+        forEach(slab(s - 1), [&](int i, int j, int k) {
+          const std::int64_t c = sb.index(i, j, k);
+          const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
+          const double b = positivityBlend(remOf(i, j, k), eL[c] - ec, vL[c]);
+          if (b < 1.0) {
+            adv_.blends.push_back({c, r, b});
+            ++positivityBlends_;
           }
         });
       }
     }
 
-    // The positivity blend of every owned donor (positivityBlend), then, at the outgoing faces of
-    // the few donors with a blend below 1, the difference between the blended fluxes and those
-    // applied above (the same on both sides of the face: conservative).
+    // At the outgoing faces of the few donors with a blend below 1, the difference between the
+    // blended fluxes and those applied above (the same on both sides of the face: conservative).
+    if (!(comm_.max(adv_.blends.empty() ? 0.0 : 1.0) > 0)) return;
     core::Field& blend = adv_.blend;
+    if (blend.ncomp() != nm) blend = core::Field("positivity_blend", core::Centering::Cell, sb, nm, kGhost);
     blend.fill(1.0);
-    bool anyBlend = false;
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      const double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
-      const double *eL = m.eintL.data(), *vL = m.spvolL.data();
-      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-      double* bl = blend.data(r);
-      for (const std::int64_t c : ownedCells_) {
-        const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
-        bl[c] = positivityBlend(rem + c * kRemSums, eL[c] - ec, vL[c]);
-        if (bl[c] < 1.0) {
-          anyBlend = true;
-          ++positivityBlends_;
-        }
-      }
-    }
-    anyBlend = comm_.max(anyBlend ? 1.0 : 0.0) > 0;
-    if (!anyBlend) return;
+    for (const AdvectionScratch::Blend& e : adv_.blends) blend.data(e.mat)[e.cell] = e.b;
     ghosts_->fill(blend);
     for (int d = 0; d < dim; ++d) {
-      const double dx = mesh_.dx(d);
-      const std::int64_t sd = strides[d];
-      const core::Box fb = owned_.faces(d);
       for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        const double* Fm = adv_.mat[r].massFlux[d].data();
-        const double* sc = outScale.data(r);
+        if (st_.mat[r].external) continue;
+        const FluxPtrs P = fluxPtrs(d, r);
         const double* bl = blend.data(r);
-        const double* uf = m.velFace[d].data();
-        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
-                     *vL = m.spvolL.data();
-        const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
-        const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
-        const double* th = m.theta.data();
-        double* a[kNumAcc];
-        accumulators(m, a);
-        forEach(fb, [&](int i, int j, int k) {
-          const std::int64_t fi = fb.index(i, j, k);
-          const double F = Fm[fi];
+        forEach(P.fb, [&](int i, int j, int k) {
+          const std::int64_t fi = P.fb.index(i, j, k);
+          const double F = P.Fm[fi];
           if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+          const std::int64_t cR = sb.index(i, j, k), cL = cR - P.sd;
           const std::int64_t D = F > 0 ? cL : cR;
           const double b = bl[D];
           if (!(b < 1.0)) return;
           const int id = d == 0 ? i : (d == 1 ? j : k);
           const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = sc[D];
-          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
-          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
+          const double lam = P.sc[D];
+          const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
+          const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
           double fl[kNumAcc];
           double ke1 = 0, keB = 0;
           for (int q = 0; q < 3; ++q) {
-            const double ub = u[q][D] + b * (f.u[q] - u[q][D]);
+            const double ub = P.u[q][D] + b * (f.u[q] - P.u[q][D]);
             fl[kMomX + q] = F * (ub - f.u[q]);
             ke1 += f.u[q] * f.u[q];
             keB += ub * ub;
           }
-          const double eb = eL[D] + b * (f.e - eL[D]), vb = vL[D] + b * (f.v - vL[D]);
+          const double eb = P.eL[D] + b * (f.e - P.eL[D]), vb = P.vL[D] + b * (f.v - P.vL[D]);
           fl[kMass] = 0.0;
           fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
           fl[kVolume] = F * (vb - f.v);
           fl[kEint] = F * (eb - f.e);
           for (int q = 0; q < kNumAcc; ++q) {
             const double v = lam * fl[q];
-            if (ownL) a[q][cL] -= v;
-            if (ownR) a[q][cR] += v;
+            if (ownL) P.a[q][cL] -= v;
+            if (ownR) P.a[q][cR] += v;
           }
         });
       }

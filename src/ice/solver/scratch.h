@@ -3,6 +3,7 @@
 /// (phase 5) and the advection (phase 12) keep so as not to allocate every step. Nothing in
 /// here is state: each phase overwrites what it reads before reading it.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -33,7 +34,9 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 /// Phase 12: per material the mass flux through each face (the other fluxes are that times a
 /// face value, computed again where they are applied), the directly advected internal energy
 /// m e per cell (the other conserved amounts are accumulated in the state's own fields), and the
-/// donors' positivity scale.
+/// donors' positivity scale. The positivity blend's per-donor sums live for two slabs of cells
+/// only (rows in 2D, planes in 3D: the flux pass sweeps them in order and a slab's sums are
+/// complete once the faces above it are done), its factors only where they are below 1.
 struct AdvectionScratch {
   struct Material {
     std::vector<double> eint;               // m e per stored cell
@@ -42,13 +45,22 @@ struct AdvectionScratch {
     /// the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
     std::vector<double> isenGamma, isenPi;
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
-    /// Per stored cell, kRemSums values: the donor's mass left after its outflows, and the
-    /// outflows' sums the positivity blend needs (advection_phase.cpp).
-    std::vector<double> remainder;
+  };
+  /// An owned donor whose outgoing face values are blended (factor b < 1).
+  struct Blend {
+    std::int64_t cell;
+    int mat;
+    double b;
   };
   std::vector<Material> mat;
   core::Field outflowScale;  // one component per material: scale of each donor's outflow
-  core::Field blend;         // one component per material: each donor's face-value blend (1: none)
+  /// Per owned cell of two consecutive slabs, kRemSums values: the donor's mass left after its
+  /// outflows and the outflows' sums the positivity blend needs (advection_phase.cpp).
+  std::vector<double> remainder;
+  std::vector<Blend> blends;  // this step's blended donors
+  /// One component per material: each donor's face-value blend (1: none), with ghosts;
+  /// allocated on the first step with a blend (most scenes have none).
+  core::Field blend;
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
   std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
 };
