@@ -277,13 +277,11 @@ void IceSolver::advectFluids() {
     // with superbee and water against air with superbee stopped on a negative temperature
     // (docs/ice.md "The full sweep").
     const bool entropyBound = Second && riemannFacePressureOn();
-    if (entropyBound)
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
-        isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, am.isenGamma, am.isenPi);
-      }
+    // One fluid's fits at a time (the passes below take the fluids one after the other).
+    auto fitIsentropes = [&](int r) {
+      const MaterialState& m = st_.mat[r];
+      if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, adv_.isenGamma, adv_.isenPi);
+    };
 
     // The face values of one fluid at one face: velocity, specific volume, internal energy (the
     // entropy-bounded pair at second order, above).
@@ -320,7 +318,7 @@ void IceSolver::advectFluids() {
       AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
       FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(r),
                  m.velFace[d].data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
-                 m.spvolL.data(), Second ? am.isenGamma.data() : nullptr, Second ? am.isenPi.data() : nullptr,
+                 m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
                  m.theta.data(), {}};
       accumulators(m, P.a);
       return P;
@@ -392,6 +390,7 @@ void IceSolver::advectFluids() {
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
+      fitIsentropes(r);
       FluxPtrs P[3];
       for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
       const double* ms = m.mass.data();
@@ -439,9 +438,10 @@ void IceSolver::advectFluids() {
     blend.fill(1.0);
     for (const AdvectionScratch::Blend& e : adv_.blends) blend.data(e.mat)[e.cell] = e.b;
     ghosts_->fill(blend);
-    for (int d = 0; d < dim; ++d) {
-      for (int r = 0; r < nm; ++r) {
-        if (st_.mat[r].external) continue;
+    for (int r = 0; r < nm; ++r) {
+      if (st_.mat[r].external) continue;
+      fitIsentropes(r);  // again: only on steps with a blend
+      for (int d = 0; d < dim; ++d) {
         const FluxPtrs P = fluxPtrs(d, r);
         const double* bl = blend.data(r);
         forEach(P.fb, [&](int i, int j, int k) {

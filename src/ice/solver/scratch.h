@@ -40,10 +40,6 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 struct AdvectionScratch {
   struct Material {
     std::vector<double> eint;               // m e per stored cell
-    /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state (second
-    /// order only): Gruneisen coefficient (NaN where the fit is not admissible) and pi, so that
-    /// the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
-    std::vector<double> isenGamma, isenPi;
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
   };
   /// An owned donor whose outgoing face values are blended (factor b < 1).
@@ -61,6 +57,11 @@ struct AdvectionScratch {
   /// One component per material: each donor's face-value blend (1: none), with ghosts;
   /// allocated on the first step with a blend (most scenes have none).
   core::Field blend;
+  /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state of the fluid
+  /// being advected (second order only; one fluid at a time): Gruneisen coefficient (NaN where
+  /// the fit is not admissible) and pi, so that the cell's isentrope is
+  /// e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
+  std::vector<double> isenGamma, isenPi;
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
   std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
 };
