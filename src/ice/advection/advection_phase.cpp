@@ -166,10 +166,12 @@ void IceSolver::advectFluids() {
 
   core::Field& outScale = adv_.outflowScale;
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
-  // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order).
+  // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order;
+  // null: the momentum beyond the mesh's dimension, which the velocity does not hold).
   auto accumulators = [&](MaterialState& m, double** a) {
     a[kMass] = m.mass.data();
-    for (int d = 0; d < 3; ++d) a[kMomX + d] = m.vel.data(d);
+    const auto u = core::components(m.vel);
+    for (int d = 0; d < 3; ++d) a[kMomX + d] = u[static_cast<std::size_t>(d)];
     a[kEnergy] = m.eint.data();
     a[kVolume] = m.spvol.data();
     a[kEint] = adv_.mat[static_cast<std::size_t>(&m - st_.mat.data())].eint.data();
@@ -256,11 +258,11 @@ void IceSolver::advectFluids() {
       double* a[kNumAcc];
       accumulators(m, a);
       const double *e = m.eintL.data(), *v = m.spvolL.data();
-      const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+      const auto u = core::components(m.velL);
       for (const std::int64_t c : ownedCells_) {
         const double mass = a[kMass][c];
         double ke = 0;
-        for (int d = 0; d < 3; ++d) {
+        for (int d = 0; d < dim; ++d) {
           a[kMomX + d][c] = mass * u[d][c];
           ke += u[d][c] * u[d][c];
         }
@@ -283,15 +285,15 @@ void IceSolver::advectFluids() {
       if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, adv_.isenGamma, adv_.isenPi);
     };
 
-    // The face values of one fluid at one face: velocity, specific volume, internal energy (the
-    // entropy-bounded pair at second order, above).
+    // The face values of one fluid at one face: velocity (the mesh's dimension of components),
+    // specific volume, internal energy (the entropy-bounded pair at second order, above).
     struct FaceState {
       double u[3], v, e;
     };
     auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
                          const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
       FaceState f;
-      for (int q = 0; q < 3; ++q) f.u[q] = q < dim ? face(u[q]) : u[q][face.D];
+      for (int q = 0; q < dim; ++q) f.u[q] = face(u[q]);
       f.v = face(vL);
       f.e = face(eL);
       if constexpr (Second) {
@@ -316,8 +318,9 @@ void IceSolver::advectFluids() {
     auto fluxPtrs = [&](int d, int r) {
       MaterialState& m = st_.mat[r];
       AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
+      const auto uL = core::components(m.velL);
       FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(r),
-                 m.velFace[d].data(), {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
+                 m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eintL.data(),
                  m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
                  m.theta.data(), {}};
       accumulators(m, P.a);
@@ -360,7 +363,7 @@ void IceSolver::advectFluids() {
       const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
       double fl[kNumAcc];
       double ke = 0;
-      for (int q = 0; q < 3; ++q) {
+      for (int q = 0; q < dim; ++q) {
         fl[kMomX + q] = F * f.u[q];
         ke += f.u[q] * f.u[q];
       }
@@ -369,6 +372,7 @@ void IceSolver::advectFluids() {
       fl[kVolume] = F * f.v;
       fl[kEint] = F * f.e;
       for (int q = 0; q < kNumAcc; ++q) {
+        if (P.a[q] == nullptr) continue;  // momentum beyond the mesh's dimension
         const double v = lam * fl[q];
         if (ownL) P.a[q][cL] -= v;
         if (ownR) P.a[q][cR] += v;
@@ -459,7 +463,7 @@ void IceSolver::advectFluids() {
           const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
           double fl[kNumAcc];
           double ke1 = 0, keB = 0;
-          for (int q = 0; q < 3; ++q) {
+          for (int q = 0; q < dim; ++q) {
             const double ub = P.u[q][D] + b * (f.u[q] - P.u[q][D]);
             fl[kMomX + q] = F * (ub - f.u[q]);
             ke1 += f.u[q] * f.u[q];
@@ -471,6 +475,7 @@ void IceSolver::advectFluids() {
           fl[kVolume] = F * (vb - f.v);
           fl[kEint] = F * (eb - f.e);
           for (int q = 0; q < kNumAcc; ++q) {
+            if (P.a[q] == nullptr) continue;
             const double v = lam * fl[q];
             if (ownL) P.a[q][cL] -= v;
             if (ownR) P.a[q][cR] += v;
@@ -500,9 +505,9 @@ void IceSolver::advectFluids() {
     double* a[kNumAcc];
     accumulators(m, a);
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
-    double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
+    const auto u = core::components(m.vel);
     const double *eL = m.eintL.data(), *vL = m.spvolL.data();
-    const double* uL[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    const auto uL = core::components(m.velL);
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
@@ -515,14 +520,14 @@ void IceSolver::advectFluids() {
       if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
-        for (int d = 0; d < 3; ++d) u[d][c] = uL[d][c];
+        for (int d = 0; d < dim; ++d) u[d][c] = uL[d][c];
         e[c] = eL[c];
         v[c] = vL[c];
         continue;
       }
       const double inv = 1.0 / mass;
       double ke = 0;
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < dim; ++d) {
         double ud = a[kMomX + d][c] * inv;
         if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
         u[d][c] = ud;

@@ -41,9 +41,10 @@ void IceSolver::computeSourcesAndLagrangian() {
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
-    ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(),
-              {m.vel.data(0), m.vel.data(1), m.vel.data(2)}, m.eint.data(),
-              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
+    const auto u = core::components(m.vel);
+    const auto uL = core::components(m.velL);
+    ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(), {u[0], u[1], u[2]}, m.eint.data(),
+              {uL[0], uL[1], uL[2]}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
@@ -94,9 +95,9 @@ void IceSolver::computeSourcesAndLagrangian() {
       const double v = P.v[c], mass = P.m[c];
       const double f = P.th[c] > 0 ? volumeShare(P) / P.th[c] : (kbar > 0 && !cavity ? P.ka[c] / kbar : 0.0);
       double ke0 = 0, ke1 = 0;
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < dim; ++d) {
         const double u = P.u[d][c];
-        const double uL = d < dim ? u - dt * v * gp[d] : u;
+        const double uL = u - dt * v * gp[d];
         P.uL[d][c] = uL;
         ke0 += u * u;
         ke1 += uL * uL;

@@ -1,8 +1,9 @@
 #pragma once
 /// @brief The cell state of ICE: per-material SoA fields over this rank's cells plus ghosts.
 ///
-/// Every material (fluid or external) has its mass per cell, velocity (3 components, those beyond
-/// the mesh dimension stay zero), specific internal energy, specific volume (1 / material
+/// Every material (fluid or external) has its mass per cell, velocity (the mesh's dimension of
+/// components: 2D holds no z, which was an exact zero; core::components gives null beyond them;
+/// output pads it to 3), specific internal energy, specific volume (1 / material
 /// density) and volume fraction, and the Lagrangian (post-source, post-exchange) velocity,
 /// energy and specific volume; face velocities live on the faces normal to each direction that
 /// bound this rank's cells (face index i = low face of cell i). The pressure fields are shared by
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "ice/eos/eos.h"
+#include "core/field/components.h"
 #include "core/field/field.h"
 
 namespace mpmice::ice {
