@@ -161,10 +161,9 @@ void IceSolver::advectFluids() {
         adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
       adv_.mat[r].eint.resize(npts);
     }
-    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
+    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
   }
 
-  core::Field& outScale = adv_.outflowScale;
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order;
   // null: the momentum beyond the mesh's dimension, which the velocity does not hold).
@@ -178,13 +177,11 @@ void IceSolver::advectFluids() {
   };
   // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
   auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
-    // Pass 1: the mass flux through every face (what the positivity scale needs) and each donor's
-    // outflow. The other fluxes are the mass flux times a face value (pass 2).
-    outScale.fill(0.0);
+    // Pass 1: the mass flux through every face (what the positivity scale needs). The other
+    // fluxes are the mass flux times a face value (pass 2).
     struct Ptr {
       const double *th, *sv, *uf;
       double* flux;
-      double* out;
       bool skip;
     };
     std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
@@ -196,7 +193,7 @@ void IceSolver::advectFluids() {
       for (int r = 0; r < nm; ++r) {
         MaterialState& m = st_.mat[r];
         ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
-                  m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
+                  m.external ? nullptr : adv_.mat[r].massFlux[d].data(), m.external};
       }
       const core::Field* solidFaces = st_.solidFaces.on ? &st_.solidFaces.cover[d] : nullptr;
       forEach(fb, [&](int i, int j, int k) {
@@ -222,32 +219,42 @@ void IceSolver::advectFluids() {
         // (solid_faces.h), as in the volume fluxes of the pressure.
         const double target = solidFaces != nullptr && s1 > 0 ? 1.0 - solidFaces->data()[fi] : s1;
         const double scale = s2 > 0 ? target / s2 : 0.0;
-        const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-        const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
         for (int r = 0; r < nm; ++r) {
           const Ptr& P = ptr[r];
           if (th1[r] == 0 && th2[r] == 0) {
             if (!P.skip) P.flux[fi] = 0;
             continue;
           }
-          const double F = fm[r] * th2[r] * scale;
-          P.flux[fi] = F;
-          // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
-          if (F > 0 && ownL) P.out[cL] += F;
-          if (F < 0 && ownR) P.out[cR] -= F;
+          P.flux[fi] = fm[r] * th2[r] * scale;
         }
       });
     }
 
-    // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
-    // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
-    for (int r = 0; r < nm; ++r) {
+    // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of
+    // its mass has them scaled down (it keeps at least 10% of its mass, so its specific values
+    // stay well conditioned) (the same factor on both sides of each face, so conservation holds);
+    // 1 elsewhere. One fluid at a time (the passes below take them one after the other): each
+    // owned donor's outflow summed over its faces in the order x low, x high, y low, y high,
+    // z low, z high; the ghosts' from their owners.
+    core::Field& outScale = adv_.outflowScale;
+    auto outflowScale = [&](int r) {
       const double* ms = st_.mat[r].mass.data();
-      double* sc = outScale.data(r);
-      const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
-      for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
-    }
-    ghosts_->fill(outScale);
+      double* sc = outScale.data();
+      const AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
+      std::fill(sc, sc + npts, 0.0);
+      for (int d = 0; d < dim; ++d) {
+        const core::Box fb = owned_.faces(d);
+        const double* Fm = am.massFlux[d].data();
+        forEach(owned_, [&](int i, int j, int k) {
+          const double Flo = Fm[fb.index(i, j, k)], Fhi = Fm[fb.index(i + (d == 0), j + (d == 1), k + (d == 2))];
+          double& out = sc[sb.index(i, j, k)];
+          if (Flo < 0) out -= Flo;
+          if (Fhi > 0) out += Fhi;
+        });
+      }
+      for (std::size_t c = 0; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
+      ghosts_->fill(outScale);
+    };
 
     // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
     // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
@@ -319,7 +326,7 @@ void IceSolver::advectFluids() {
       MaterialState& m = st_.mat[r];
       AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
       const auto uL = core::components(m.velL);
-      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(r),
+      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(),
                  m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eintL.data(),
                  m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
                  m.theta.data(), {}};
@@ -394,6 +401,7 @@ void IceSolver::advectFluids() {
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
+      outflowScale(r);
       fitIsentropes(r);
       FluxPtrs P[3];
       for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
@@ -427,7 +435,7 @@ void IceSolver::advectFluids() {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
           const double b = positivityBlend(remOf(i, j, k), eL[c] - ec, vL[c]);
           if (b < 1.0) {
-            adv_.blends.push_back({c, r, b});
+            adv_.blends.push_back({c, r, b, P[0].sc[c]});
             ++positivityBlends_;
           }
         });
@@ -438,16 +446,19 @@ void IceSolver::advectFluids() {
     // blended fluxes and those applied above (the same on both sides of the face: conservative).
     if (!(comm_.max(adv_.blends.empty() ? 0.0 : 1.0) > 0)) return;
     core::Field& blend = adv_.blend;
-    if (blend.ncomp() != nm) blend = core::Field("positivity_blend", core::Centering::Cell, sb, nm, kGhost);
+    if (blend.ncomp() != 2 * nm) blend = core::Field("positivity_blend", core::Centering::Cell, sb, 2 * nm, kGhost);
     blend.fill(1.0);
-    for (const AdvectionScratch::Blend& e : adv_.blends) blend.data(e.mat)[e.cell] = e.b;
+    for (const AdvectionScratch::Blend& e : adv_.blends) {
+      blend.data(2 * e.mat)[e.cell] = e.b;
+      blend.data(2 * e.mat + 1)[e.cell] = e.scale;
+    }
     ghosts_->fill(blend);
     for (int r = 0; r < nm; ++r) {
       if (st_.mat[r].external) continue;
       fitIsentropes(r);  // again: only on steps with a blend
       for (int d = 0; d < dim; ++d) {
         const FluxPtrs P = fluxPtrs(d, r);
-        const double* bl = blend.data(r);
+        const double *bl = blend.data(2 * r), *scale = blend.data(2 * r + 1);
         forEach(P.fb, [&](int i, int j, int k) {
           const std::int64_t fi = P.fb.index(i, j, k);
           const double F = P.Fm[fi];
@@ -458,7 +469,7 @@ void IceSolver::advectFluids() {
           if (!(b < 1.0)) return;
           const int id = d == 0 ? i : (d == 1 ? j : k);
           const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = P.sc[D];
+          const double lam = scale[D];
           const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
           const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
           double fl[kNumAcc];

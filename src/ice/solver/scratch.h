@@ -42,20 +42,21 @@ struct AdvectionScratch {
     std::vector<double> eint;               // m e per stored cell
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
   };
-  /// An owned donor whose outgoing face values are blended (factor b < 1).
+  /// An owned donor whose outgoing face values are blended (factor b < 1), and its outflow scale.
   struct Blend {
     std::int64_t cell;
     int mat;
-    double b;
+    double b, scale;
   };
   std::vector<Material> mat;
-  core::Field outflowScale;  // one component per material: scale of each donor's outflow
+  core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected (one at a time)
   /// Per owned cell of two consecutive slabs, kRemSums values: the donor's mass left after its
   /// outflows and the outflows' sums the positivity blend needs (advection_phase.cpp).
   std::vector<double> remainder;
   std::vector<Blend> blends;  // this step's blended donors
-  /// One component per material: each donor's face-value blend (1: none), with ghosts;
-  /// allocated on the first step with a blend (most scenes have none).
+  /// Two components per material: each donor's face-value blend (1: none) and, where it is below
+  /// 1, its outflow scale, with ghosts; allocated on the first step with a blend (most scenes
+  /// have none).
   core::Field blend;
   /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state of the fluid
   /// being advected (second order only; one fluid at a time): Gruneisen coefficient (NaN where
