@@ -159,21 +159,80 @@ void IceSolver::advectFluids() {
       if (st_.mat[r].external) continue;
       for (int d = 0; d < dim; ++d)
         adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
-      adv_.mat[r].eint.resize(npts);
     }
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
+    for (int d = 0; d < dim; ++d) adv_.momentum[static_cast<std::size_t>(d)].resize(npts);
+    adv_.energy.resize(npts);
+    adv_.eint.resize(npts);
+    adv_.mass.resize(npts);
   }
 
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
-  // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order;
-  // null: the momentum beyond the mesh's dimension, which the velocity does not hold).
+  // The conserved amounts of the owned cells of the fluid being advected (advected::k* order): the
+  // mass and m v in the state's own fields, m u, m (e + |u|^2 / 2) and m e in the scratch shared by
+  // the fluids (its velocity and energy are the face values' sources until its conversion below);
+  // null: the momentum beyond the mesh's dimension.
   auto accumulators = [&](MaterialState& m, double** a) {
     a[kMass] = m.mass.data();
-    const auto u = core::components(m.vel);
-    for (int d = 0; d < 3; ++d) a[kMomX + d] = u[static_cast<std::size_t>(d)];
-    a[kEnergy] = m.eint.data();
+    for (int d = 0; d < 3; ++d) a[kMomX + d] = d < dim ? adv_.momentum[static_cast<std::size_t>(d)].data() : nullptr;
+    a[kEnergy] = adv_.energy.data();
     a[kVolume] = m.spvol.data();
-    a[kEint] = adv_.mat[static_cast<std::size_t>(&m - st_.mat.data())].eint.data();
+    a[kEint] = adv_.eint.data();
+  };
+  // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
+  // velocity, specific volume and internal energy (its velocity and energy, the face values'
+  // sources, held the Lagrangian values until here).
+  auto convert = [&](int r) {
+    MaterialState& m = st_.mat[r];
+    double* a[kNumAcc];
+    accumulators(m, a);
+    double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
+    const auto u = core::components(m.vel);
+    const double* vL = m.spvolL.data();
+    // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
+    // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
+    // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
+    const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+    for (const std::int64_t c : ownedCells_) {
+      const double mass = a[kMass][c];
+      // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
+      // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
+      // energy they held is audited). They keep the Lagrangian values (velocity and energy: as they are).
+      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
+        if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
+        ms[c] = 0;
+        v[c] = vL[c];
+        continue;
+      }
+      const double inv = 1.0 / mass;
+      double ke = 0;
+      for (int d = 0; d < dim; ++d) {
+        double ud = a[kMomX + d][c] * inv;
+        if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
+        u[d][c] = ud;
+        ke += ud * ud;
+      }
+      ms[c] = mass;
+      v[c] = a[kVolume][c] * inv;
+      // The limited face volumes can drain more volume than a trace holds when its neighbours carry
+      // far larger specific volumes (held traces, docs/ice.md "Traces"): keep the Lagrangian value
+      // (specific volume is not a conserved quantity; the equilibrium pressure sets it again).
+      if (!(v[c] > 0)) {
+        v[c] = vL[c];
+        ++fallbacks_;
+      }
+      const double eE = a[kEnergy][c] * inv - 0.5 * ke;
+      const double eA = a[kEint][c] * inv;
+      const double ec = cold ? m.eos->coldEnergy(1.0 / v[c]) : 0.0;
+      if (eA - ec > 0 && eE - ec < kMinEnergyShare * (eA - ec)) {
+        e[c] = eA;
+        ++fallbacks_;
+        audit_.add(mass * (eA - eE), c, r);  // not conservative: the energy it adds is audited
+      } else {
+        e[c] = eE;
+      }
+      audit_.localEnergy += mass * (e[c] + 0.5 * ke);
+    }
   };
   // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
   auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
@@ -256,16 +315,14 @@ void IceSolver::advectFluids() {
       ghosts_->fill(outScale);
     };
 
-    // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
-    // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
-    // (internal energy), m v (specific volume); m e in the scratch. advected::k* order.
-    for (int r = 0; r < nm; ++r) {
+    // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
+    // m (e + |u|^2 / 2), m v (in the specific volume, which nothing below reads), m e.
+    auto conserved = [&](int r) {
       MaterialState& m = st_.mat[r];
-      if (m.external) continue;
       double* a[kNumAcc];
       accumulators(m, a);
-      const double *e = m.eintL.data(), *v = m.spvolL.data();
-      const auto u = core::components(m.velL);
+      const double *e = m.eint.data(), *v = m.spvolL.data();  // Lagrangian (ice_state.h)
+      const auto u = core::components(m.vel);
       for (const std::int64_t c : ownedCells_) {
         const double mass = a[kMass][c];
         double ke = 0;
@@ -277,7 +334,7 @@ void IceSolver::advectFluids() {
         a[kVolume][c] = mass * v[c];
         a[kEint][c] = mass * e[c];
       }
-    }
+    };
 
     // The isentrope fits of the entropy-bounded face state (second order; first order takes the
     // donor's own state, which is on its isentrope). Only with the Riemann face pressure: the
@@ -289,7 +346,7 @@ void IceSolver::advectFluids() {
     // One fluid's fits at a time (the passes below take the fluids one after the other).
     auto fitIsentropes = [&](int r) {
       const MaterialState& m = st_.mat[r];
-      if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, adv_.isenGamma, adv_.isenPi);
+      if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
     };
 
     // The face values of one fluid at one face: velocity (the mesh's dimension of components),
@@ -325,9 +382,9 @@ void IceSolver::advectFluids() {
     auto fluxPtrs = [&](int d, int r) {
       MaterialState& m = st_.mat[r];
       AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
-      const auto uL = core::components(m.velL);
+      const auto uL = core::components(m.vel);  // the Lagrangian values (ice_state.h)
       FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(),
-                 m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eintL.data(),
+                 m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eint.data(),
                  m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
                  m.theta.data(), {}};
       accumulators(m, P.a);
@@ -398,16 +455,48 @@ void IceSolver::advectFluids() {
         R[kRemV] += w * (f.v - P.vL[D]);
       }
     };
+    // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
+    // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
+    // order for every cell) summed apart.
+    adv_.fluidMass.assign(npts, 0.0);
+    for (int r = 0; r < nm; ++r) {
+      const MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      outflowScale(r);
+      std::copy(m.mass.data(), m.mass.data() + npts, adv_.mass.begin());
+      double* ma = adv_.mass.data();
+      const double* sc = outScale.data();
+      for (int d = 0; d < dim; ++d) {
+        const core::Box fb = owned_.faces(d);
+        const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
+        const std::int64_t sd = strides[d];
+        forEach(fb, [&](int i, int j, int k) {
+          const double F = Fm[fb.index(i, j, k)];
+          if (F == 0) return;
+          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+          const int id = d == 0 ? i : (d == 1 ? j : k);
+          const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
+          if (id > owned_.lo[d]) ma[cL] -= v;
+          if (id <= owned_.hi[d]) ma[cR] += v;
+        });
+      }
+      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
+    }
+
+    // One fluid after the other: its outflow scale, isentrope fits and conserved amounts, pass 2
+    // with its blend sums, the blend pass, and its conversion back to primitive values.
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
       outflowScale(r);
       fitIsentropes(r);
+      conserved(r);
       FluxPtrs P[3];
       for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
       const double* ms = m.mass.data();
-      const double *eL = m.eintL.data(), *vL = m.spvolL.data();
+      const double *eL = m.eint.data(), *vL = m.spvolL.data();
       const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+      adv_.blends.clear();
       auto row = [&](int d, int j, int k, int ihi) {  // the faces normal to d along x at (j, k)
         for (int i = owned_.lo[0]; i <= ihi; ++i) pass2Face(P[d], d, i, j, k);
       };
@@ -435,64 +524,59 @@ void IceSolver::advectFluids() {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
           const double b = positivityBlend(remOf(i, j, k), eL[c] - ec, vL[c]);
           if (b < 1.0) {
-            adv_.blends.push_back({c, r, b, P[0].sc[c]});
+            adv_.blends.push_back({c, b});
             ++positivityBlends_;
           }
         });
       }
-    }
 
-    // At the outgoing faces of the few donors with a blend below 1, the difference between the
-    // blended fluxes and those applied above (the same on both sides of the face: conservative).
-    if (!(comm_.max(adv_.blends.empty() ? 0.0 : 1.0) > 0)) return;
-    core::Field& blend = adv_.blend;
-    if (blend.ncomp() != 2 * nm) blend = core::Field("positivity_blend", core::Centering::Cell, sb, 2 * nm, kGhost);
-    blend.fill(1.0);
-    for (const AdvectionScratch::Blend& e : adv_.blends) {
-      blend.data(2 * e.mat)[e.cell] = e.b;
-      blend.data(2 * e.mat + 1)[e.cell] = e.scale;
-    }
-    ghosts_->fill(blend);
-    for (int r = 0; r < nm; ++r) {
-      if (st_.mat[r].external) continue;
-      fitIsentropes(r);  // again: only on steps with a blend
-      for (int d = 0; d < dim; ++d) {
-        const FluxPtrs P = fluxPtrs(d, r);
-        const double *bl = blend.data(2 * r), *scale = blend.data(2 * r + 1);
-        forEach(P.fb, [&](int i, int j, int k) {
-          const std::int64_t fi = P.fb.index(i, j, k);
-          const double F = P.Fm[fi];
-          if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - P.sd;
-          const std::int64_t D = F > 0 ? cL : cR;
-          const double b = bl[D];
-          if (!(b < 1.0)) return;
-          const int id = d == 0 ? i : (d == 1 ? j : k);
-          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = scale[D];
-          const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
-          const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
-          double fl[kNumAcc];
-          double ke1 = 0, keB = 0;
-          for (int q = 0; q < dim; ++q) {
-            const double ub = P.u[q][D] + b * (f.u[q] - P.u[q][D]);
-            fl[kMomX + q] = F * (ub - f.u[q]);
-            ke1 += f.u[q] * f.u[q];
-            keB += ub * ub;
-          }
-          const double eb = P.eL[D] + b * (f.e - P.eL[D]), vb = P.vL[D] + b * (f.v - P.vL[D]);
-          fl[kMass] = 0.0;
-          fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
-          fl[kVolume] = F * (vb - f.v);
-          fl[kEint] = F * (eb - f.e);
-          for (int q = 0; q < kNumAcc; ++q) {
-            if (P.a[q] == nullptr) continue;
-            const double v = lam * fl[q];
-            if (ownL) P.a[q][cL] -= v;
-            if (ownR) P.a[q][cR] += v;
-          }
-        });
+      // At the outgoing faces of the few donors with a blend below 1, the difference between the
+      // blended fluxes and those applied above (the same on both sides of the face: conservative).
+      if (comm_.max(adv_.blends.empty() ? 0.0 : 1.0) > 0) {
+        core::Field& blend = adv_.blend;
+        if (blend.ncomp() != 1) blend = core::Field("positivity_blend", core::Centering::Cell, sb, 1, kGhost);
+        blend.fill(1.0);
+        for (const AdvectionScratch::Blend& e : adv_.blends) blend.data()[e.cell] = e.b;
+        ghosts_->fill(blend);
+        const double* bl = blend.data();
+        for (int d = 0; d < dim; ++d) {
+          const FluxPtrs& Q = P[d];
+          forEach(Q.fb, [&](int i, int j, int k) {
+            const std::int64_t fi = Q.fb.index(i, j, k);
+            const double F = Q.Fm[fi];
+            if (F == 0) return;
+            const std::int64_t cR = sb.index(i, j, k), cL = cR - Q.sd;
+            const std::int64_t D = F > 0 ? cL : cR;
+            const double b = bl[D];
+            if (!(b < 1.0)) return;
+            const int id = d == 0 ? i : (d == 1 ? j : k);
+            const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+            const double lam = Q.sc[D];
+            const FaceValue face(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
+            const FaceState f = faceState(face, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
+            double fl[kNumAcc];
+            double ke1 = 0, keB = 0;
+            for (int q = 0; q < dim; ++q) {
+              const double ub = Q.u[q][D] + b * (f.u[q] - Q.u[q][D]);
+              fl[kMomX + q] = F * (ub - f.u[q]);
+              ke1 += f.u[q] * f.u[q];
+              keB += ub * ub;
+            }
+            const double eb = Q.eL[D] + b * (f.e - Q.eL[D]), vb = Q.vL[D] + b * (f.v - Q.vL[D]);
+            fl[kMass] = 0.0;
+            fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
+            fl[kVolume] = F * (vb - f.v);
+            fl[kEint] = F * (eb - f.e);
+            for (int q = 0; q < kNumAcc; ++q) {
+              if (Q.a[q] == nullptr) continue;
+              const double v = lam * fl[q];
+              if (ownL) Q.a[q][cL] -= v;
+              if (ownR) Q.a[q][cR] += v;
+            }
+          });
+        }
       }
+      convert(r);
     }
   };
   switch (secondOrder_ ? static_cast<Limiter>(limiter_) : Limiter::Minmod) {
@@ -502,69 +586,6 @@ void IceSolver::advectFluids() {
       break;
     case Limiter::VanLeer: passes(Recon<true, Limiter::VanLeer>{}); break;
     case Limiter::Superbee: passes(Recon<true, Limiter::Superbee>{}); break;
-  }
-
-  // The cells' fluid mass after advection (the mass fields hold it now), for the negligible-trace
-  // cut-off below.
-  adv_.fluidMass.assign(npts, 0.0);
-  for (int r = 0; r < nm; ++r)
-    if (!st_.mat[r].external)
-      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += st_.mat[r].mass.data()[c];
-  for (int r = 0; r < nm; ++r) {
-    MaterialState& m = st_.mat[r];
-    if (m.external) continue;
-    double* a[kNumAcc];
-    accumulators(m, a);
-    double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
-    const auto u = core::components(m.vel);
-    const double *eL = m.eintL.data(), *vL = m.spvolL.data();
-    const auto uL = core::components(m.velL);
-    // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
-    // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
-    // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
-    const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-    for (const std::int64_t c : ownedCells_) {
-      const double mass = a[kMass][c];
-      // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
-      // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
-      // energy they held is audited).
-      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
-        if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
-        ms[c] = 0;
-        for (int d = 0; d < dim; ++d) u[d][c] = uL[d][c];
-        e[c] = eL[c];
-        v[c] = vL[c];
-        continue;
-      }
-      const double inv = 1.0 / mass;
-      double ke = 0;
-      for (int d = 0; d < dim; ++d) {
-        double ud = a[kMomX + d][c] * inv;
-        if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
-        u[d][c] = ud;
-        ke += ud * ud;
-      }
-      ms[c] = mass;
-      v[c] = a[kVolume][c] * inv;
-      // The limited face volumes can drain more volume than a trace holds when its neighbours carry
-      // far larger specific volumes (held traces, docs/ice.md "Traces"): keep the Lagrangian value
-      // (specific volume is not a conserved quantity; the equilibrium pressure sets it again).
-      if (!(v[c] > 0)) {
-        v[c] = vL[c];
-        ++fallbacks_;
-      }
-      const double eE = a[kEnergy][c] * inv - 0.5 * ke;
-      const double eA = a[kEint][c] * inv;
-      const double ec = cold ? m.eos->coldEnergy(1.0 / v[c]) : 0.0;
-      if (eA - ec > 0 && eE - ec < kMinEnergyShare * (eA - ec)) {
-        e[c] = eA;
-        ++fallbacks_;
-        audit_.add(mass * (eA - eE), c, r);  // not conservative: the energy it adds is audited
-      } else {
-        e[c] = eE;
-      }
-      audit_.localEnergy += mass * (e[c] + 0.5 * ke);
-    }
   }
   audit_.endStep(comm_);
   t_ += dt;

@@ -37,7 +37,7 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
   for (int r = 0; r < numMaterials(); ++r) {
     MaterialState& m = st_.mat[r];
     if (lagrangian) {
-      fs.insert(fs.end(), {{&m.velL, FieldKind::Velocity}, {&m.eintL, FieldKind::Energy},
+      fs.insert(fs.end(), {{&m.lagVel(), FieldKind::Velocity}, {&m.lagEint(), FieldKind::Energy},
                            {&m.spvolL, FieldKind::SpecificVolume}});
       mats.insert(mats.end(), {r, r, r});
     } else {
@@ -382,7 +382,8 @@ void IceSolver::setExternalLagrangianMomentum(int material, std::span<const doub
   forEach(owned_, [&](int i, int j, int k) {
     const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
     const double mass = m.mass(i, j, k);
-    for (int d = 0; d < m.velL.ncomp(); ++d) m.velL(i, j, k, d) = mass > 0 ? momentum[d * n + q] / mass : m.vel(i, j, k, d);
+    core::Field& uL = m.lagVel();
+    for (int d = 0; d < uL.ncomp(); ++d) uL(i, j, k, d) = mass > 0 ? momentum[d * n + q] / mass : m.vel(i, j, k, d);
   });
 }
 
@@ -393,7 +394,7 @@ void IceSolver::setExternalLagrangianEnergy(int material, std::span<const double
   forEach(owned_, [&](int i, int j, int k) {
     const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
     const double mass = m.mass(i, j, k);
-    m.eintL(i, j, k) = mass > 0 ? energy[q] / mass : m.eint(i, j, k);
+    m.lagEint()(i, j, k) = mass > 0 ? energy[q] / mass : m.eint(i, j, k);
   });
 }
 

@@ -32,36 +32,38 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 }
 
 /// Phase 12: per material the mass flux through each face (the other fluxes are that times a
-/// face value, computed again where they are applied), the directly advected internal energy
-/// m e per cell (the other conserved amounts are accumulated in the state's own fields), and the
-/// donors' positivity scale. The positivity blend's per-donor sums live for two slabs of cells
-/// only (rows in 2D, planes in 3D: the flux pass sweeps them in order and a slab's sums are
-/// complete once the faces above it are done), its factors only where they are below 1.
+/// face value, computed again where they are applied). The fluids are advected one after the
+/// other (their fluxes are independent once the mass fluxes are known), so the rest is shared
+/// by them: the conserved amounts being accumulated (m u, m (e + |u|^2 / 2), m e; the mass and
+/// m v in the state's own fields), the donors' positivity scale, the isentrope fits. The
+/// positivity blend's per-donor sums live for two slabs of cells only (rows in 2D, planes in
+/// 3D: pass 2 sweeps them in order and a slab's sums are complete once the faces above it are
+/// done), its factors only where they are below 1.
 struct AdvectionScratch {
   struct Material {
-    std::vector<double> eint;               // m e per stored cell
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
   };
-  /// An owned donor whose outgoing face values are blended (factor b < 1), and its outflow scale.
+  /// An owned donor whose outgoing face values are blended (factor b < 1).
   struct Blend {
     std::int64_t cell;
-    int mat;
-    double b, scale;
+    double b;
   };
   std::vector<Material> mat;
-  core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected (one at a time)
+  core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected
+  /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
+  /// m (e + |u|^2 / 2), m e; its mass after advection (for fluidMass).
+  std::array<std::vector<double>, 3> momentum;
+  std::vector<double> energy, eint, mass;
   /// Per owned cell of two consecutive slabs, kRemSums values: the donor's mass left after its
   /// outflows and the outflows' sums the positivity blend needs (advection_phase.cpp).
   std::vector<double> remainder;
-  std::vector<Blend> blends;  // this step's blended donors
-  /// Two components per material: each donor's face-value blend (1: none) and, where it is below
-  /// 1, its outflow scale, with ghosts; allocated on the first step with a blend (most scenes
-  /// have none).
+  std::vector<Blend> blends;  // the blended donors of the fluid being advected
+  /// Each donor's face-value blend (1: none), with ghosts, of the fluid being advected; allocated
+  /// on the first step with a blend (most scenes have none).
   core::Field blend;
   /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state of the fluid
-  /// being advected (second order only; one fluid at a time): Gruneisen coefficient (NaN where
-  /// the fit is not admissible) and pi, so that the cell's isentrope is
-  /// e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
+  /// being advected (second order only): Gruneisen coefficient (NaN where the fit is not
+  /// admissible) and pi, so that the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
   std::vector<double> isenGamma, isenPi;
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
   std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
