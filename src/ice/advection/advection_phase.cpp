@@ -577,6 +577,14 @@ void IceSolver::advectFluids() {
         }
       }
       convert(r);
+      // The velocity's ghosts as they were before the Lagrangian values' fill above (the state's
+      // at the step's equilibrium), as when the Lagrangian values were copies: a coupled run's
+      // stable step reads them (the shock viscosity's du) before the next equilibrium fills them.
+      if (q1_ > 0 || q2_ > 0)
+        forEach(sb, [&](int i, int j, int k) {
+          if (owned_.contains(i, j, k)) return;
+          for (int d = 0; d < dim; ++d) m.vel(i, j, k, d) = m.velStart(i, j, k, d);
+        });
     }
   };
   switch (secondOrder_ ? static_cast<Limiter>(limiter_) : Limiter::Minmod) {

@@ -43,7 +43,7 @@ void IceSolver::computeSourcesAndLagrangian() {
   for (MaterialState& m : st_.mat) {
     if (m.external) continue;
     if (anyExternal_ || m.conductivity > 0) m.eintStart = m.eint;
-    if (m.viscosity > 0) m.velStart = m.vel;
+    if (m.viscosity > 0 || q1_ > 0 || q2_ > 0) m.velStart = m.vel;  // shock viscosity: advectFluids
   }
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {

@@ -41,7 +41,7 @@ struct MaterialState {
   /// A fluid's start-of-step internal energy and velocity, copied before the Lagrangian phase
   /// updates them in place, only where something after it reads them (the energy: heat
   /// conduction, and in coupled runs the embedded trace's temperature change; the velocity:
-  /// viscosity); empty otherwise.
+  /// viscosity, and the shock viscosity's stable step: its ghosts); empty otherwise.
   core::Field eintStart, velStart;
   /// The Lagrangian velocity and internal energy (see above).
   core::Field& lagVel() { return external ? velL : vel; }
