@@ -295,7 +295,10 @@ void IceSolver::advectFluids() {
     // 1 elsewhere. One fluid at a time (the passes below take them one after the other): each
     // owned donor's outflow summed over its faces in the order x low, x high, y low, y high,
     // z low, z high; the ghosts' from their owners.
+    // Computed once per fluid (for the fluid mass below); where it is not 1 (few cells) it is kept
+    // and put back when the fluid is advected.
     core::Field& outScale = adv_.outflowScale;
+    adv_.capped.resize(static_cast<std::size_t>(nm));
     auto outflowScale = [&](int r) {
       const double* ms = st_.mat[r].mass.data();
       double* sc = outScale.data();
@@ -304,15 +307,28 @@ void IceSolver::advectFluids() {
       for (int d = 0; d < dim; ++d) {
         const core::Box fb = owned_.faces(d);
         const double* Fm = am.massFlux[d].data();
-        forEach(owned_, [&](int i, int j, int k) {
-          const double Flo = Fm[fb.index(i, j, k)], Fhi = Fm[fb.index(i + (d == 0), j + (d == 1), k + (d == 2))];
-          double& out = sc[sb.index(i, j, k)];
-          if (Flo < 0) out -= Flo;
-          if (Fhi > 0) out += Fhi;
-        });
+        const std::int64_t up = d == 0 ? 1 : (d == 1 ? fb.length(0) : std::int64_t(fb.length(0)) * fb.length(1));
+        for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+            const double* F = Fm + fb.index(owned_.lo[0], j, k);  // the row's low faces
+            double* out = sc + sb.index(owned_.lo[0], j, k);
+            for (int i = 0; i < owned_.length(0); ++i) {
+              if (F[i] < 0) out[i] -= F[i];
+              if (F[i + up] > 0) out[i] += F[i + up];
+            }
+          }
       }
       for (std::size_t c = 0; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
       ghosts_->fill(outScale);
+      auto& capped = adv_.capped[static_cast<std::size_t>(r)];
+      capped.clear();
+      for (std::size_t c = 0; c < npts; ++c)
+        if (sc[c] != 1.0) capped.push_back({static_cast<std::int64_t>(c), sc[c]});
+    };
+    auto restoreOutflowScale = [&](int r) {
+      double* sc = outScale.data();
+      std::fill(sc, sc + npts, 1.0);
+      for (const auto& [c, v] : adv_.capped[static_cast<std::size_t>(r)]) sc[c] = v;
     };
 
     // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
@@ -399,60 +415,76 @@ void IceSolver::advectFluids() {
     // per direction), and a slab's sums are complete once the faces above it are done: only two
     // slabs of sums are kept.
     const int top = dim - 1;
-    std::int64_t slabSize = 1;
-    for (int q = 0; q < top; ++q) slabSize *= owned_.length(q);
-    adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
-    adv_.blends.clear();
-    double* rem = adv_.remainder.data();
-    auto remOf = [&](int ci, int cj, int ck) {  // an owned cell's sums
-      const int c[3] = {ci, cj, ck};
-      std::int64_t at = c[top] & 1;
-      for (int q = top - 1; q >= 0; --q) at = at * owned_.length(q) + (c[q] - owned_.lo[q]);
-      return rem + at * kRemSums;
-    };
     auto slab = [&](int s) {  // the owned cells with index s in top
       core::Box b = owned_;
       b.lo[top] = b.hi[top] = s;
       return b;
     };
-    auto pass2Face = [&](const FluxPtrs& P, int d, int i, int j, int k) {
-      const std::int64_t fi = P.fb.index(i, j, k);
-      const double F = P.Fm[fi];
-      if (F == 0) return;
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - P.sd;
-      const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-      const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-      const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
-      const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
-      const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
-      double fl[kNumAcc];
-      double ke = 0;
-      for (int q = 0; q < dim; ++q) {
-        fl[kMomX + q] = F * f.u[q];
-        ke += f.u[q] * f.u[q];
-      }
-      fl[kMass] = F;
-      fl[kEnergy] = F * (f.e + 0.5 * ke);
-      fl[kVolume] = F * f.v;
-      fl[kEint] = F * f.e;
-      for (int q = 0; q < kNumAcc; ++q) {
-        if (P.a[q] == nullptr) continue;  // momentum beyond the mesh's dimension
-        const double v = lam * fl[q];
-        if (ownL) P.a[q][cL] -= v;
-        if (ownR) P.a[q][cR] += v;
-      }
-      const std::int64_t D = face.D;
-      if (D == cL ? ownL : ownR) {
-        double* R = D == cL ? remOf(i - (d == 0), j - (d == 1), k - (d == 2)) : remOf(i, j, k);
-        const double w = lam * std::abs(F);
-        R[kRemMass] -= w;
-        R[kRemE] += w * (f.e - P.eL[D]);
-        for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
-          const double du = f.u[q] - P.u[q][D];
-          R[kRemU2] += w * du * du;
-          R[kRemUx + q] += w * du;
+    std::int64_t slabSize = 1;
+    for (int q = 0; q < top; ++q) slabSize *= owned_.length(q);
+    adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
+    adv_.blends.clear();
+    double* rem = adv_.remainder.data();
+    // An owned cell (i, j, k)'s sums: rem + remRow(j, k) + remCol(i).
+    const std::int64_t nx = owned_.length(0);
+    auto remRow = [&](int j, int k) -> std::int64_t {
+      if (top == 0) return 0;
+      const int t = top == 1 ? j : k;
+      return ((t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0)) * kRemSums;
+    };
+    auto remCol = [&](int i) -> std::int64_t { return (top == 0 ? (i & 1) : i - owned_.lo[0]) * kRemSums; };
+    // Calls f(c, R) for every owned cell of slab s (c its stored index, R its sums).
+    auto forSlab = [&](int s, auto&& f) {
+      const core::Box b = slab(s);
+      for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+        for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
+          double* R = rem + remRow(j, k);
+          const std::int64_t c0 = sb.index(b.lo[0], j, k);
+          for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
         }
-        R[kRemV] += w * (f.v - P.vL[D]);
+    };
+    // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k).
+    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+      const int lo = owned_.lo[d], hi = owned_.hi[d];
+      std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
+      // The sums' rows of the cells on the high and the low side (owned rows only are read).
+      const std::int64_t rowR = remRow(j, k), rowL = d == 0 ? rowR : remRow(j - (d == 1), k - (d == 2));
+      for (int i = ilo; i <= ihi; ++i, ++fi, ++cR) {
+        const double F = P.Fm[fi];
+        if (F == 0) continue;
+        const std::int64_t cL = cR - P.sd;
+        const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
+        const bool ownL = id > lo, ownR = id <= hi;
+        const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
+        const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
+        const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
+        auto apply = [&](double* acc, double flux) {
+          const double v = lam * flux;
+          if (ownL) acc[cL] -= v;
+          if (ownR) acc[cR] += v;
+        };
+        double ke = 0;
+        for (int q = 0; q < dim; ++q) {
+          apply(P.a[kMomX + q], F * f.u[q]);
+          ke += f.u[q] * f.u[q];
+        }
+        apply(P.a[kMass], F);
+        apply(P.a[kEnergy], F * (f.e + 0.5 * ke));
+        apply(P.a[kVolume], F * f.v);
+        apply(P.a[kEint], F * f.e);
+        const std::int64_t D = face.D;
+        if (D == cL ? ownL : ownR) {
+          double* R = rem + (D == cL ? rowL + remCol(i - (d == 0)) : rowR + remCol(i));
+          const double w = lam * std::abs(F);
+          R[kRemMass] -= w;
+          R[kRemE] += w * (f.e - P.eL[D]);
+          for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
+            const double du = f.u[q] - P.u[q][D];
+            R[kRemU2] += w * du * du;
+            R[kRemUx + q] += w * du;
+          }
+          R[kRemV] += w * (f.v - P.vL[D]);
+        }
       }
     };
     // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
@@ -470,15 +502,19 @@ void IceSolver::advectFluids() {
         const core::Box fb = owned_.faces(d);
         const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
         const std::int64_t sd = strides[d];
-        forEach(fb, [&](int i, int j, int k) {
-          const double F = Fm[fb.index(i, j, k)];
-          if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-          const int id = d == 0 ? i : (d == 1 ? j : k);
-          const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
-          if (id > owned_.lo[d]) ma[cL] -= v;
-          if (id <= owned_.hi[d]) ma[cR] += v;
-        });
+        for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+          for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+            std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
+            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) {
+              const double F = Fm[fi];
+              if (F == 0) continue;
+              const std::int64_t cL = cR - sd;
+              const int id = d == 0 ? i : (d == 1 ? j : k);
+              const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
+              if (id > owned_.lo[d]) ma[cL] -= v;
+              if (id <= owned_.hi[d]) ma[cR] += v;
+            }
+          }
       }
       for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
     }
@@ -488,7 +524,7 @@ void IceSolver::advectFluids() {
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
-      outflowScale(r);
+      restoreOutflowScale(r);
       fitIsentropes(r);
       conserved(r);
       FluxPtrs P[3];
@@ -497,14 +533,11 @@ void IceSolver::advectFluids() {
       const double *eL = m.eint.data(), *vL = m.spvolL.data();
       const bool cold = m.eos->coldEnergy(1.0) != 0.0;
       adv_.blends.clear();
-      auto row = [&](int d, int j, int k, int ihi) {  // the faces normal to d along x at (j, k)
-        for (int i = owned_.lo[0]; i <= ihi; ++i) pass2Face(P[d], d, i, j, k);
-      };
+      auto row = [&](int d, int j, int k, int ihi) { pass2Row(P[d], d, j, k, owned_.lo[0], ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
         if (s <= owned_.hi[top]) {
-          forEach(slab(s), [&](int i, int j, int k) {  // the mass before advection, no outflow yet
-            double* R = remOf(i, j, k);
-            R[kRemMass] = ms[sb.index(i, j, k)];
+          forSlab(s, [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
+            R[kRemMass] = ms[c];
             for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
           });
           if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
@@ -516,13 +549,16 @@ void IceSolver::advectFluids() {
             row(1, owned_.hi[1] + 1, s, owned_.hi[0]);
           }
         }
-        forEach(slab(s), [&](int i, int j, int k) { pass2Face(P[top], top, i, j, k); });  // low faces of s in top
+        // The low faces of slab s in top.
+        if (dim == 1) pass2Row(P[0], 0, owned_.lo[1], owned_.lo[2], s, s);
+        if (dim == 2) row(1, s, owned_.lo[2], owned_.hi[0]);
+        if (dim == 3)
+          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, owned_.hi[0]);
         if (s == owned_.lo[top]) continue;
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
-        forEach(slab(s - 1), [&](int i, int j, int k) {
-          const std::int64_t c = sb.index(i, j, k);
+        forSlab(s - 1, [&](std::int64_t c, const double* R) {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
-          const double b = positivityBlend(remOf(i, j, k), eL[c] - ec, vL[c]);
+          const double b = positivityBlend(R, eL[c] - ec, vL[c]);
           if (b < 1.0) {
             adv_.blends.push_back({c, b});
             ++positivityBlends_;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/field/field.h"
@@ -50,6 +51,9 @@ struct AdvectionScratch {
   };
   std::vector<Material> mat;
   core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected
+  /// Per material, the stored cells whose outflow scale is not 1 and their scale (computed once
+  /// per step for the fluid mass after advection, put back when the fluid is advected).
+  std::vector<std::vector<std::pair<std::int64_t, double>>> capped;
   /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
   /// m (e + |u|^2 / 2), m e; its mass after advection (for fluidMass).
   std::array<std::vector<double>, 3> momentum;
