@@ -31,7 +31,7 @@ using core::forEach;
 namespace {
 using namespace advected;
 constexpr int kNumAcc = kCount;
-// The positivity blend's per-donor sums (AdvectionScratch::Material::remainder): the mass left
+// The positivity blend's per-donor sums (AdvectionScratch::remainder, two slabs): the mass left
 // after the outflows, and over the outgoing faces (w = the scaled outgoing mass flux, D the donor's
 // Lagrangian values) sum w (e_f - e_D), sum w |u_f - u_D|^2, sum w (u_f - u_D) (3), sum w (v_f - v_D).
 enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRemSums };
@@ -159,323 +159,36 @@ void IceSolver::advectFluids() {
       if (st_.mat[r].external) continue;
       for (int d = 0; d < dim; ++d)
         adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
-      adv_.mat[r].eint.resize(npts);
     }
-    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, nm, kGhost);
-    adv_.blend = core::Field("positivity_blend", core::Centering::Cell, sb, nm, kGhost);
+    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
+    for (int d = 0; d < dim; ++d) adv_.momentum[static_cast<std::size_t>(d)].resize(npts);
+    adv_.energy.resize(npts);
+    adv_.eint.resize(npts);
+    adv_.mass.resize(npts);
   }
-  for (int r = 0; r < nm; ++r)
-    if (!st_.mat[r].external) adv_.mat[static_cast<std::size_t>(r)].remainder.resize(npts * kRemSums);
 
-  core::Field& outScale = adv_.outflowScale;
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
-  // The conserved amounts of the owned cells are accumulated in the state's own fields (advected::k* order).
+  // The conserved amounts of the owned cells of the fluid being advected (advected::k* order): the
+  // mass and m v in the state's own fields, m u, m (e + |u|^2 / 2) and m e in the scratch shared by
+  // the fluids (its velocity and energy are the face values' sources until its conversion below);
+  // null: the momentum beyond the mesh's dimension.
   auto accumulators = [&](MaterialState& m, double** a) {
     a[kMass] = m.mass.data();
-    for (int d = 0; d < 3; ++d) a[kMomX + d] = m.vel.data(d);
-    a[kEnergy] = m.eint.data();
+    for (int d = 0; d < 3; ++d) a[kMomX + d] = d < dim ? adv_.momentum[static_cast<std::size_t>(d)].data() : nullptr;
+    a[kEnergy] = adv_.energy.data();
     a[kVolume] = m.spvol.data();
-    a[kEint] = adv_.mat[static_cast<std::size_t>(&m - st_.mat.data())].eint.data();
+    a[kEint] = adv_.eint.data();
   };
-  // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
-  auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
-    // Pass 1: the mass flux through every face (what the positivity scale needs) and each donor's
-    // outflow. The other fluxes are the mass flux times a face value (pass 2).
-    outScale.fill(0.0);
-    struct Ptr {
-      const double *th, *sv, *uf;
-      double* flux;
-      double* out;
-      bool skip;
-    };
-    std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
-    for (int d = 0; d < dim; ++d) {
-      const double dx = mesh_.dx(d);
-      const double A = V / dx;
-      const std::int64_t sd = strides[d];
-      const core::Box fb = owned_.faces(d);
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
-                  m.external ? nullptr : adv_.mat[r].massFlux[d].data(), outScale.data(r), m.external};
-      }
-      const core::Field* solidFaces = st_.solidFaces.on ? &st_.solidFaces.cover[d] : nullptr;
-      forEach(fb, [&](int i, int j, int k) {
-        const std::int64_t fi = fb.index(i, j, k);
-        const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-        double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
-        double s1 = 0, s2 = 0;
-        for (int r = 0; r < nm; ++r) {
-          const Ptr& P = ptr[r];
-          th1[r] = th2[r] = 0;
-          if (P.skip) continue;
-          const double uf = P.uf[fi];
-          if (uf == 0) continue;
-          const FaceValue face(rc, uf, cL, sd, dt, dx);
-          const double sgn = uf > 0 ? 1.0 : -1.0;
-          th1[r] = P.th[face.D];
-          th2[r] = face(P.th);
-          s1 += th1[r];
-          s2 += th2[r];
-          fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
-        }
-        // With the solids' face transport the fluids share the open part of the face, 1 - cover
-        // (solid_faces.h), as in the volume fluxes of the pressure.
-        const double target = solidFaces != nullptr && s1 > 0 ? 1.0 - solidFaces->data()[fi] : s1;
-        const double scale = s2 > 0 ? target / s2 : 0.0;
-        const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-        const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-        for (int r = 0; r < nm; ++r) {
-          const Ptr& P = ptr[r];
-          if (th1[r] == 0 && th2[r] == 0) {
-            if (!P.skip) P.flux[fi] = 0;
-            continue;
-          }
-          const double F = fm[r] * th2[r] * scale;
-          P.flux[fi] = F;
-          // Outflow of the donor (owned donors only; ghosts get theirs from their owner).
-          if (F > 0 && ownL) P.out[cL] += F;
-          if (F < 0 && ownR) P.out[cR] -= F;
-        }
-      });
-    }
-
-    // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of its mass has them
-    // scaled down (it keeps at least 10% of its mass, so its specific values stay well conditioned) (the same factor on both sides of each face, so conservation holds); 1 elsewhere.
-    for (int r = 0; r < nm; ++r) {
-      const double* ms = st_.mat[r].mass.data();
-      double* sc = outScale.data(r);
-      const std::size_t nsb = static_cast<std::size_t>(sb.numPts());
-      for (std::size_t c = 0; c < nsb; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
-    }
-    ghosts_->fill(outScale);
-
-    // The conserved amounts of the owned cells, accumulated in the state's own fields (nothing
-    // below reads their primitive values): m (mass, as it is), m u (velocity), m (e + |u|^2 / 2)
-    // (internal energy), m v (specific volume); m e in the scratch. advected::k* order.
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      double* a[kNumAcc];
-      accumulators(m, a);
-      const double *e = m.eintL.data(), *v = m.spvolL.data();
-      const double* u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
-      double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
-      for (const std::int64_t c : ownedCells_) {
-        const double mass = a[kMass][c];
-        double* R = rem + c * kRemSums;
-        R[kRemMass] = mass;
-        for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
-        double ke = 0;
-        for (int d = 0; d < 3; ++d) {
-          a[kMomX + d][c] = mass * u[d][c];
-          ke += u[d][c] * u[d][c];
-        }
-        a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
-        a[kVolume][c] = mass * v[c];
-        a[kEint][c] = mass * e[c];
-      }
-    }
-
-    // The isentrope fits of the entropy-bounded face state (second order; first order takes the
-    // donor's own state, which is on its isentrope). Only with the Riemann face pressure: the
-    // average face pressure (and coupled runs, which use it) has no dissipation at shocks, every
-    // shock rings there (up to +65 %) and the bound cannot make up for it; with it, Toro's test 2
-    // with superbee and water against air with superbee stopped on a negative temperature
-    // (docs/ice.md "The full sweep").
-    const bool entropyBound = Second && riemannFacePressureOn();
-    if (entropyBound)
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
-        isentropeFits(*m.eos, npts, m.spvolL.data(), m.eintL.data(), adv_, am.isenGamma, am.isenPi);
-      }
-
-    // The face values of one fluid at one face: velocity, specific volume, internal energy (the
-    // entropy-bounded pair at second order, above).
-    struct FaceState {
-      double u[3], v, e;
-    };
-    auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
-                         const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
-      FaceState f;
-      for (int q = 0; q < 3; ++q) f.u[q] = q < dim ? face(u[q]) : u[q][face.D];
-      f.v = face(vL);
-      f.e = face(eL);
-      if constexpr (Second) {
-        const std::int64_t O = face.D == cL ? cR : cL;
-        if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O])) f.e = entropyBounded(f.e, f.v, face.D, O, eL, vL, isG, isP);
-      } else {
-        (void)cR, (void)th, (void)isG, (void)isP;
-      }
-      return f;
-    };
-
-    // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
-    // the owned cells on both sides; each owned donor's sums for the positivity blend.
-    for (int d = 0; d < dim; ++d) {
-      const double dx = mesh_.dx(d);
-      const std::int64_t sd = strides[d];
-      const core::Box fb = owned_.faces(d);
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        const double* Fm = adv_.mat[r].massFlux[d].data();
-        const double* sc = outScale.data(r);
-        const double* uf = m.velFace[d].data();
-        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
-                     *vL = m.spvolL.data();
-        const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
-        const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
-        const double* th = m.theta.data();
-        double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
-        double* a[kNumAcc];
-        accumulators(m, a);
-        forEach(fb, [&](int i, int j, int k) {
-          const std::int64_t fi = fb.index(i, j, k);
-          const double F = Fm[fi];
-          if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-          const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = F > 0 ? sc[cL] : sc[cR];
-          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
-          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
-          double fl[kNumAcc];
-          double ke = 0;
-          for (int q = 0; q < 3; ++q) {
-            fl[kMomX + q] = F * f.u[q];
-            ke += f.u[q] * f.u[q];
-          }
-          fl[kMass] = F;
-          fl[kEnergy] = F * (f.e + 0.5 * ke);
-          fl[kVolume] = F * f.v;
-          fl[kEint] = F * f.e;
-          for (int q = 0; q < kNumAcc; ++q) {
-            const double v = lam * fl[q];
-            if (ownL) a[q][cL] -= v;
-            if (ownR) a[q][cR] += v;
-          }
-          const std::int64_t D = face.D;
-          if (D == cL ? ownL : ownR) {
-            double* R = rem + D * kRemSums;
-            const double w = lam * std::abs(F);
-            R[kRemMass] -= w;
-            R[kRemE] += w * (f.e - eL[D]);
-            for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
-              const double du = f.u[q] - u[q][D];
-              R[kRemU2] += w * du * du;
-              R[kRemUx + q] += w * du;
-            }
-            R[kRemV] += w * (f.v - vL[D]);
-          }
-        });
-      }
-    }
-
-    // The positivity blend of every owned donor (positivityBlend), then, at the outgoing faces of
-    // the few donors with a blend below 1, the difference between the blended fluxes and those
-    // applied above (the same on both sides of the face: conservative).
-    core::Field& blend = adv_.blend;
-    blend.fill(1.0);
-    bool anyBlend = false;
-    for (int r = 0; r < nm; ++r) {
-      MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      const double* rem = adv_.mat[static_cast<std::size_t>(r)].remainder.data();
-      const double *eL = m.eintL.data(), *vL = m.spvolL.data();
-      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-      double* bl = blend.data(r);
-      for (const std::int64_t c : ownedCells_) {
-        const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
-        bl[c] = positivityBlend(rem + c * kRemSums, eL[c] - ec, vL[c]);
-        if (bl[c] < 1.0) {
-          anyBlend = true;
-          ++positivityBlends_;
-        }
-      }
-    }
-    anyBlend = comm_.max(anyBlend ? 1.0 : 0.0) > 0;
-    if (!anyBlend) return;
-    ghosts_->fill(blend);
-    for (int d = 0; d < dim; ++d) {
-      const double dx = mesh_.dx(d);
-      const std::int64_t sd = strides[d];
-      const core::Box fb = owned_.faces(d);
-      for (int r = 0; r < nm; ++r) {
-        MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        const double* Fm = adv_.mat[r].massFlux[d].data();
-        const double* sc = outScale.data(r);
-        const double* bl = blend.data(r);
-        const double* uf = m.velFace[d].data();
-        const double *u[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, *eL = m.eintL.data(),
-                     *vL = m.spvolL.data();
-        const double* isG = Second ? adv_.mat[r].isenGamma.data() : nullptr;
-        const double* isP = Second ? adv_.mat[r].isenPi.data() : nullptr;
-        const double* th = m.theta.data();
-        double* a[kNumAcc];
-        accumulators(m, a);
-        forEach(fb, [&](int i, int j, int k) {
-          const std::int64_t fi = fb.index(i, j, k);
-          const double F = Fm[fi];
-          if (F == 0) return;
-          const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
-          const std::int64_t D = F > 0 ? cL : cR;
-          const double b = bl[D];
-          if (!(b < 1.0)) return;
-          const int id = d == 0 ? i : (d == 1 ? j : k);
-          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = sc[D];
-          const FaceValue face(rc, uf[fi], cL, sd, dt, dx);
-          const FaceState f = faceState(face, cL, cR, u, vL, eL, th, isG, isP);
-          double fl[kNumAcc];
-          double ke1 = 0, keB = 0;
-          for (int q = 0; q < 3; ++q) {
-            const double ub = u[q][D] + b * (f.u[q] - u[q][D]);
-            fl[kMomX + q] = F * (ub - f.u[q]);
-            ke1 += f.u[q] * f.u[q];
-            keB += ub * ub;
-          }
-          const double eb = eL[D] + b * (f.e - eL[D]), vb = vL[D] + b * (f.v - vL[D]);
-          fl[kMass] = 0.0;
-          fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
-          fl[kVolume] = F * (vb - f.v);
-          fl[kEint] = F * (eb - f.e);
-          for (int q = 0; q < kNumAcc; ++q) {
-            const double v = lam * fl[q];
-            if (ownL) a[q][cL] -= v;
-            if (ownR) a[q][cR] += v;
-          }
-        });
-      }
-    }
-  };
-  switch (secondOrder_ ? static_cast<Limiter>(limiter_) : Limiter::Minmod) {
-    case Limiter::Minmod:
-      if (secondOrder_) passes(Recon<true, Limiter::Minmod>{});
-      else passes(Recon<false, Limiter::Minmod>{});
-      break;
-    case Limiter::VanLeer: passes(Recon<true, Limiter::VanLeer>{}); break;
-    case Limiter::Superbee: passes(Recon<true, Limiter::Superbee>{}); break;
-  }
-
-  // The cells' fluid mass after advection (the mass fields hold it now), for the negligible-trace
-  // cut-off below.
-  adv_.fluidMass.assign(npts, 0.0);
-  for (int r = 0; r < nm; ++r)
-    if (!st_.mat[r].external)
-      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += st_.mat[r].mass.data()[c];
-  for (int r = 0; r < nm; ++r) {
+  // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
+  // velocity, specific volume and internal energy (its velocity and energy, the face values'
+  // sources, held the Lagrangian values until here).
+  auto convert = [&](int r) {
     MaterialState& m = st_.mat[r];
-    if (m.external) continue;
     double* a[kNumAcc];
     accumulators(m, a);
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
-    double* u[3] = {m.vel.data(0), m.vel.data(1), m.vel.data(2)};
-    const double *eL = m.eintL.data(), *vL = m.spvolL.data();
-    const double* uL[3] = {m.velL.data(0), m.velL.data(1), m.velL.data(2)};
+    const auto u = core::components(m.vel);
+    const double* vL = m.spvolL.data();
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
@@ -484,18 +197,16 @@ void IceSolver::advectFluids() {
       const double mass = a[kMass][c];
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
-      // energy they held is audited).
+      // energy they held is audited). They keep the Lagrangian values (velocity and energy: as they are).
       if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
-        for (int d = 0; d < 3; ++d) u[d][c] = uL[d][c];
-        e[c] = eL[c];
         v[c] = vL[c];
         continue;
       }
       const double inv = 1.0 / mass;
       double ke = 0;
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < dim; ++d) {
         double ud = a[kMomX + d][c] * inv;
         if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
         u[d][c] = ud;
@@ -522,6 +233,403 @@ void IceSolver::advectFluids() {
       }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
     }
+  };
+  // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
+  auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
+    // Pass 1: the mass flux through every face (what the positivity scale needs). The other
+    // fluxes are the mass flux times a face value (pass 2).
+    struct Ptr {
+      const double *th, *sv, *uf;
+      double* flux;
+      bool skip;
+    };
+    std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+    for (int d = 0; d < dim; ++d) {
+      const double dx = mesh_.dx(d);
+      const double A = V / dx;
+      const std::int64_t sd = strides[d];
+      const core::Box fb = owned_.faces(d);
+      for (int r = 0; r < nm; ++r) {
+        MaterialState& m = st_.mat[r];
+        ptr[r] = {m.theta.data(), m.spvol.data(), m.velFace[d].data(),
+                  m.external ? nullptr : adv_.mat[r].massFlux[d].data(), m.external};
+      }
+      const core::Field* solidFaces = st_.solidFaces.on ? &st_.solidFaces.cover[d] : nullptr;
+      forEach(fb, [&](int i, int j, int k) {
+        const std::int64_t fi = fb.index(i, j, k);
+        const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+        double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
+        double s1 = 0, s2 = 0;
+        for (int r = 0; r < nm; ++r) {
+          const Ptr& P = ptr[r];
+          th1[r] = th2[r] = 0;
+          if (P.skip) continue;
+          const double uf = P.uf[fi];
+          if (uf == 0) continue;
+          const FaceValue face(rc, uf, cL, sd, dt, dx);
+          const double sgn = uf > 0 ? 1.0 : -1.0;
+          th1[r] = P.th[face.D];
+          th2[r] = face(P.th);
+          s1 += th1[r];
+          s2 += th2[r];
+          fm[r] = sgn * std::abs(uf) * dt * A / face(P.sv);  // times theta below
+        }
+        // With the solids' face transport the fluids share the open part of the face, 1 - cover
+        // (solid_faces.h), as in the volume fluxes of the pressure.
+        const double target = solidFaces != nullptr && s1 > 0 ? 1.0 - solidFaces->data()[fi] : s1;
+        const double scale = s2 > 0 ? target / s2 : 0.0;
+        for (int r = 0; r < nm; ++r) {
+          const Ptr& P = ptr[r];
+          if (th1[r] == 0 && th2[r] == 0) {
+            if (!P.skip) P.flux[fi] = 0;
+            continue;
+          }
+          P.flux[fi] = fm[r] * th2[r] * scale;
+        }
+      });
+    }
+
+    // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of
+    // its mass has them scaled down (it keeps at least 10% of its mass, so its specific values
+    // stay well conditioned) (the same factor on both sides of each face, so conservation holds);
+    // 1 elsewhere. One fluid at a time (the passes below take them one after the other): each
+    // owned donor's outflow summed over its faces in the order x low, x high, y low, y high,
+    // z low, z high; the ghosts' from their owners.
+    // Computed once per fluid (for the fluid mass below); where it is not 1 (few cells) it is kept
+    // and put back when the fluid is advected.
+    core::Field& outScale = adv_.outflowScale;
+    adv_.capped.resize(static_cast<std::size_t>(nm));
+    auto outflowScale = [&](int r) {
+      const double* ms = st_.mat[r].mass.data();
+      double* sc = outScale.data();
+      const AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
+      std::fill(sc, sc + npts, 0.0);
+      for (int d = 0; d < dim; ++d) {
+        const core::Box fb = owned_.faces(d);
+        const double* Fm = am.massFlux[d].data();
+        const std::int64_t up = d == 0 ? 1 : (d == 1 ? fb.length(0) : std::int64_t(fb.length(0)) * fb.length(1));
+        for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+            const double* F = Fm + fb.index(owned_.lo[0], j, k);  // the row's low faces
+            double* out = sc + sb.index(owned_.lo[0], j, k);
+            for (int i = 0; i < owned_.length(0); ++i) {
+              if (F[i] < 0) out[i] -= F[i];
+              if (F[i + up] > 0) out[i] += F[i + up];
+            }
+          }
+      }
+      for (std::size_t c = 0; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
+      ghosts_->fill(outScale);
+      auto& capped = adv_.capped[static_cast<std::size_t>(r)];
+      capped.clear();
+      for (std::size_t c = 0; c < npts; ++c)
+        if (sc[c] != 1.0) capped.push_back({static_cast<std::int64_t>(c), sc[c]});
+    };
+    auto restoreOutflowScale = [&](int r) {
+      double* sc = outScale.data();
+      std::fill(sc, sc + npts, 1.0);
+      for (const auto& [c, v] : adv_.capped[static_cast<std::size_t>(r)]) sc[c] = v;
+    };
+
+    // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
+    // m (e + |u|^2 / 2), m v (in the specific volume, which nothing below reads), m e.
+    auto conserved = [&](int r) {
+      MaterialState& m = st_.mat[r];
+      double* a[kNumAcc];
+      accumulators(m, a);
+      const double *e = m.eint.data(), *v = m.spvolL.data();  // Lagrangian (ice_state.h)
+      const auto u = core::components(m.vel);
+      for (const std::int64_t c : ownedCells_) {
+        const double mass = a[kMass][c];
+        double ke = 0;
+        for (int d = 0; d < dim; ++d) {
+          a[kMomX + d][c] = mass * u[d][c];
+          ke += u[d][c] * u[d][c];
+        }
+        a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
+        a[kVolume][c] = mass * v[c];
+        a[kEint][c] = mass * e[c];
+      }
+    };
+
+    // The isentrope fits of the entropy-bounded face state (second order; first order takes the
+    // donor's own state, which is on its isentrope). Only with the Riemann face pressure: the
+    // average face pressure (and coupled runs, which use it) has no dissipation at shocks, every
+    // shock rings there (up to +65 %) and the bound cannot make up for it; with it, Toro's test 2
+    // with superbee and water against air with superbee stopped on a negative temperature
+    // (docs/ice.md "The full sweep").
+    const bool entropyBound = Second && riemannFacePressureOn();
+    // One fluid's fits at a time (the passes below take the fluids one after the other).
+    auto fitIsentropes = [&](int r) {
+      const MaterialState& m = st_.mat[r];
+      if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
+    };
+
+    // The face values of one fluid at one face: velocity (the mesh's dimension of components),
+    // specific volume, internal energy (the entropy-bounded pair at second order, above).
+    struct FaceState {
+      double u[3], v, e;
+    };
+    auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
+                         const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
+      FaceState f;
+      for (int q = 0; q < dim; ++q) f.u[q] = face(u[q]);
+      f.v = face(vL);
+      f.e = face(eL);
+      if constexpr (Second) {
+        const std::int64_t O = face.D == cL ? cR : cL;
+        if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O])) f.e = entropyBounded(f.e, f.v, face.D, O, eL, vL, isG, isP);
+      } else {
+        (void)cR, (void)th, (void)isG, (void)isP;
+      }
+      return f;
+    };
+
+    // The pointers the flux passes (pass 2 and the blend's) read and write for one fluid at the
+    // faces normal to one direction.
+    struct FluxPtrs {
+      core::Box fb;  // the faces normal to the direction that bound the owned cells
+      std::int64_t sd;
+      double dx;
+      const double *Fm, *sc, *uf;                    // mass flux, outflow scale, face velocity
+      const double *u[3], *eL, *vL, *isG, *isP, *th;  // the face values' sources
+      double* a[kNumAcc];
+    };
+    auto fluxPtrs = [&](int d, int r) {
+      MaterialState& m = st_.mat[r];
+      AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
+      const auto uL = core::components(m.vel);  // the Lagrangian values (ice_state.h)
+      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(),
+                 m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eint.data(),
+                 m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
+                 m.theta.data(), {}};
+      accumulators(m, P.a);
+      return P;
+    };
+
+    // Pass 2: every flux (the mass flux, scaled for positivity, times the face values) applied to
+    // the owned cells on both sides; each owned donor's sums for the positivity blend. One fluid
+    // at a time, sweeping the slabs of cells along the last direction (top: rows in 2D, planes in
+    // 3D) with the faces inside a slab before its low faces in top; every cell still receives its
+    // faces' terms in the order x low, x high, y low, y high, z low, z high (the order of a sweep
+    // per direction), and a slab's sums are complete once the faces above it are done: only two
+    // slabs of sums are kept.
+    const int top = dim - 1;
+    auto slab = [&](int s) {  // the owned cells with index s in top
+      core::Box b = owned_;
+      b.lo[top] = b.hi[top] = s;
+      return b;
+    };
+    std::int64_t slabSize = 1;
+    for (int q = 0; q < top; ++q) slabSize *= owned_.length(q);
+    adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
+    adv_.blends.clear();
+    double* rem = adv_.remainder.data();
+    // An owned cell (i, j, k)'s sums: rem + remRow(j, k) + remCol(i).
+    const std::int64_t nx = owned_.length(0);
+    auto remRow = [&](int j, int k) -> std::int64_t {
+      if (top == 0) return 0;
+      const int t = top == 1 ? j : k;
+      return ((t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0)) * kRemSums;
+    };
+    auto remCol = [&](int i) -> std::int64_t { return (top == 0 ? (i & 1) : i - owned_.lo[0]) * kRemSums; };
+    // Calls f(c, R) for every owned cell of slab s (c its stored index, R its sums).
+    auto forSlab = [&](int s, auto&& f) {
+      const core::Box b = slab(s);
+      for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+        for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
+          double* R = rem + remRow(j, k);
+          const std::int64_t c0 = sb.index(b.lo[0], j, k);
+          for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
+        }
+    };
+    // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k).
+    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+      const int lo = owned_.lo[d], hi = owned_.hi[d];
+      std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
+      // The sums' rows of the cells on the high and the low side (owned rows only are read).
+      const std::int64_t rowR = remRow(j, k), rowL = d == 0 ? rowR : remRow(j - (d == 1), k - (d == 2));
+      for (int i = ilo; i <= ihi; ++i, ++fi, ++cR) {
+        const double F = P.Fm[fi];
+        if (F == 0) continue;
+        const std::int64_t cL = cR - P.sd;
+        const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
+        const bool ownL = id > lo, ownR = id <= hi;
+        const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
+        const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
+        const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
+        auto apply = [&](double* acc, double flux) {
+          const double v = lam * flux;
+          if (ownL) acc[cL] -= v;
+          if (ownR) acc[cR] += v;
+        };
+        double ke = 0;
+        for (int q = 0; q < dim; ++q) {
+          apply(P.a[kMomX + q], F * f.u[q]);
+          ke += f.u[q] * f.u[q];
+        }
+        apply(P.a[kMass], F);
+        apply(P.a[kEnergy], F * (f.e + 0.5 * ke));
+        apply(P.a[kVolume], F * f.v);
+        apply(P.a[kEint], F * f.e);
+        const std::int64_t D = face.D;
+        if (D == cL ? ownL : ownR) {
+          double* R = rem + (D == cL ? rowL + remCol(i - (d == 0)) : rowR + remCol(i));
+          const double w = lam * std::abs(F);
+          R[kRemMass] -= w;
+          R[kRemE] += w * (f.e - P.eL[D]);
+          for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
+            const double du = f.u[q] - P.u[q][D];
+            R[kRemU2] += w * du * du;
+            R[kRemUx + q] += w * du;
+          }
+          R[kRemV] += w * (f.v - P.vL[D]);
+        }
+      }
+    };
+    // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
+    // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
+    // order for every cell) summed apart.
+    adv_.fluidMass.assign(npts, 0.0);
+    for (int r = 0; r < nm; ++r) {
+      const MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      outflowScale(r);
+      std::copy(m.mass.data(), m.mass.data() + npts, adv_.mass.begin());
+      double* ma = adv_.mass.data();
+      const double* sc = outScale.data();
+      for (int d = 0; d < dim; ++d) {
+        const core::Box fb = owned_.faces(d);
+        const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
+        const std::int64_t sd = strides[d];
+        for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+          for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+            std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
+            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) {
+              const double F = Fm[fi];
+              if (F == 0) continue;
+              const std::int64_t cL = cR - sd;
+              const int id = d == 0 ? i : (d == 1 ? j : k);
+              const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
+              if (id > owned_.lo[d]) ma[cL] -= v;
+              if (id <= owned_.hi[d]) ma[cR] += v;
+            }
+          }
+      }
+      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
+    }
+
+    // One fluid after the other: its outflow scale, isentrope fits and conserved amounts, pass 2
+    // with its blend sums, the blend pass, and its conversion back to primitive values.
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      if (m.external) continue;
+      restoreOutflowScale(r);
+      fitIsentropes(r);
+      conserved(r);
+      FluxPtrs P[3];
+      for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
+      const double* ms = m.mass.data();
+      const double *eL = m.eint.data(), *vL = m.spvolL.data();
+      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+      adv_.blends.clear();
+      auto row = [&](int d, int j, int k, int ihi) { pass2Row(P[d], d, j, k, owned_.lo[0], ihi); };
+      for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
+        if (s <= owned_.hi[top]) {
+          forSlab(s, [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
+            R[kRemMass] = ms[c];
+            for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
+          });
+          if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
+          if (dim == 3) {
+            for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+              row(0, j, s, owned_.hi[0] + 1);
+              row(1, j, s, owned_.hi[0]);
+            }
+            row(1, owned_.hi[1] + 1, s, owned_.hi[0]);
+          }
+        }
+        // The low faces of slab s in top.
+        if (dim == 1) pass2Row(P[0], 0, owned_.lo[1], owned_.lo[2], s, s);
+        if (dim == 2) row(1, s, owned_.lo[2], owned_.hi[0]);
+        if (dim == 3)
+          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, owned_.hi[0]);
+        if (s == owned_.lo[top]) continue;
+        // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
+        forSlab(s - 1, [&](std::int64_t c, const double* R) {
+          const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
+          const double b = positivityBlend(R, eL[c] - ec, vL[c]);
+          if (b < 1.0) {
+            adv_.blends.push_back({c, b});
+            ++positivityBlends_;
+          }
+        });
+      }
+
+      // At the outgoing faces of the few donors with a blend below 1, the difference between the
+      // blended fluxes and those applied above (the same on both sides of the face: conservative).
+      if (comm_.max(adv_.blends.empty() ? 0.0 : 1.0) > 0) {
+        core::Field& blend = adv_.blend;
+        if (blend.ncomp() != 1) blend = core::Field("positivity_blend", core::Centering::Cell, sb, 1, kGhost);
+        blend.fill(1.0);
+        for (const AdvectionScratch::Blend& e : adv_.blends) blend.data()[e.cell] = e.b;
+        ghosts_->fill(blend);
+        const double* bl = blend.data();
+        for (int d = 0; d < dim; ++d) {
+          const FluxPtrs& Q = P[d];
+          forEach(Q.fb, [&](int i, int j, int k) {
+            const std::int64_t fi = Q.fb.index(i, j, k);
+            const double F = Q.Fm[fi];
+            if (F == 0) return;
+            const std::int64_t cR = sb.index(i, j, k), cL = cR - Q.sd;
+            const std::int64_t D = F > 0 ? cL : cR;
+            const double b = bl[D];
+            if (!(b < 1.0)) return;
+            const int id = d == 0 ? i : (d == 1 ? j : k);
+            const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+            const double lam = Q.sc[D];
+            const FaceValue face(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
+            const FaceState f = faceState(face, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
+            double fl[kNumAcc];
+            double ke1 = 0, keB = 0;
+            for (int q = 0; q < dim; ++q) {
+              const double ub = Q.u[q][D] + b * (f.u[q] - Q.u[q][D]);
+              fl[kMomX + q] = F * (ub - f.u[q]);
+              ke1 += f.u[q] * f.u[q];
+              keB += ub * ub;
+            }
+            const double eb = Q.eL[D] + b * (f.e - Q.eL[D]), vb = Q.vL[D] + b * (f.v - Q.vL[D]);
+            fl[kMass] = 0.0;
+            fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
+            fl[kVolume] = F * (vb - f.v);
+            fl[kEint] = F * (eb - f.e);
+            for (int q = 0; q < kNumAcc; ++q) {
+              if (Q.a[q] == nullptr) continue;
+              const double v = lam * fl[q];
+              if (ownL) Q.a[q][cL] -= v;
+              if (ownR) Q.a[q][cR] += v;
+            }
+          });
+        }
+      }
+      convert(r);
+      // The velocity's ghosts as they were before the Lagrangian values' fill above (the state's
+      // at the step's equilibrium), as when the Lagrangian values were copies: a coupled run's
+      // stable step reads them (the shock viscosity's du) before the next equilibrium fills them.
+      if (q1_ > 0 || q2_ > 0)
+        forEach(sb, [&](int i, int j, int k) {
+          if (owned_.contains(i, j, k)) return;
+          for (int d = 0; d < dim; ++d) m.vel(i, j, k, d) = m.velStart(i, j, k, d);
+        });
+    }
+  };
+  switch (secondOrder_ ? static_cast<Limiter>(limiter_) : Limiter::Minmod) {
+    case Limiter::Minmod:
+      if (secondOrder_) passes(Recon<true, Limiter::Minmod>{});
+      else passes(Recon<false, Limiter::Minmod>{});
+      break;
+    case Limiter::VanLeer: passes(Recon<true, Limiter::VanLeer>{}); break;
+    case Limiter::Superbee: passes(Recon<true, Limiter::Superbee>{}); break;
   }
   audit_.endStep(comm_);
   t_ += dt;

@@ -43,8 +43,8 @@ void IceSolver::exchange() {
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
-    ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(),
-              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(),
+    const auto uL = core::components(m.lagVel());
+    ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(), {uL[0], uL[1], uL[2]}, m.lagEint().data(),
               {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(),
               m.eos->cv(), m.external};
   }

@@ -59,9 +59,9 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
     for (MaterialState& m : st_.mat) {
       const double mass = m.mass.data()[c];
       if (m.external || !(mass > 0)) continue;
-      double& e = m.eintL.data()[c];
+      double& e = m.eint.data()[c];  // a fluid's Lagrangian energy (its start-of-step one: eintStart)
       const double dTown = m.eos->temperature(1.0 / m.spvolL.data()[c], e) -
-                           m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]);
+                           m.eos->temperature(1.0 / m.spvol.data()[c], m.eintStart.data()[c]);
       const double kf = m.kappa.data()[c];
       const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
       // Towards the heat-capacity-weighted mean change of the fluid and the solids, which the

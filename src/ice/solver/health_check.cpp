@@ -141,7 +141,7 @@ std::string cellContents(const IceSolver& s, std::int64_t c) {
     const double th = m.theta.data()[c], mass = m.mass.data()[c];
     if (!(th > kPresentFraction)) continue;
     double u2 = 0;
-    for (int d = 0; d < 3; ++d) u2 += m.vel.data(d)[c] * m.vel.data(d)[c];
+    for (int d = 0; d < m.vel.ncomp(); ++d) u2 += m.vel.data(d)[c] * m.vel.data(d)[c];
     os << (first ? "; the cell holds '" : ", '") << m.name << "' (theta " << th << ", density " << mass / (th * V)
        << " kg/m^3, |u| " << std::sqrt(u2) << " m/s)";
     first = false;

@@ -37,7 +37,7 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
   for (int r = 0; r < numMaterials(); ++r) {
     MaterialState& m = st_.mat[r];
     if (lagrangian) {
-      fs.insert(fs.end(), {{&m.velL, FieldKind::Velocity}, {&m.eintL, FieldKind::Energy},
+      fs.insert(fs.end(), {{&m.lagVel(), FieldKind::Velocity}, {&m.lagEint(), FieldKind::Energy},
                            {&m.spvolL, FieldKind::SpecificVolume}});
       mats.insert(mats.end(), {r, r, r});
     } else {
@@ -241,7 +241,7 @@ std::string IceSolver::stableTimeStepLimit() const {
     const std::int64_t c = b.cell;
     for (const MaterialState& m : st_.mat) {
       double u = 0;
-      for (int d = 0; d < 3; ++d) u += m.vel.data(d)[c] * m.vel.data(d)[c];
+      for (int d = 0; d < m.vel.ncomp(); ++d) u += m.vel.data(d)[c] * m.vel.data(d)[c];
       os << " '" << m.name << "' (theta " << m.theta.data()[c] << ", density " << m.mass.data()[c] / V
          << " kg/m^3, |u| " << std::sqrt(u) << " m/s, c " << std::sqrt(m.spvol.data()[c] / m.kappa.data()[c])
          << " m/s)";
@@ -297,7 +297,7 @@ void IceSolver::setExternalMaterialState(int material, std::span<const double> m
     const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
     const double v = specificVolume[q];
     m.mass(i, j, k) = mass[q];
-    for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = velocity[d * n + q];
+    for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = velocity[d * n + q];  // 3 given, the mesh's kept
     m.spvol(i, j, k) = v;
     m.eint(i, j, k) = m.eos->energyFromTemperature(1.0 / v, temperature[q]);
   });
@@ -382,7 +382,8 @@ void IceSolver::setExternalLagrangianMomentum(int material, std::span<const doub
   forEach(owned_, [&](int i, int j, int k) {
     const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
     const double mass = m.mass(i, j, k);
-    for (int d = 0; d < 3; ++d) m.velL(i, j, k, d) = mass > 0 ? momentum[d * n + q] / mass : m.vel(i, j, k, d);
+    core::Field& uL = m.lagVel();
+    for (int d = 0; d < uL.ncomp(); ++d) uL(i, j, k, d) = mass > 0 ? momentum[d * n + q] / mass : m.vel(i, j, k, d);
   });
 }
 
@@ -393,7 +394,7 @@ void IceSolver::setExternalLagrangianEnergy(int material, std::span<const double
   forEach(owned_, [&](int i, int j, int k) {
     const auto q = static_cast<std::size_t>(owned_.index(i, j, k));
     const double mass = m.mass(i, j, k);
-    m.eintL(i, j, k) = mass > 0 ? energy[q] / mass : m.eint(i, j, k);
+    m.lagEint()(i, j, k) = mass > 0 ? energy[q] / mass : m.eint(i, j, k);
   });
 }
 
@@ -428,7 +429,7 @@ Totals IceSolver::totals() const {
     forEach(owned_, [&](int i, int j, int k) {
       const double mass = m.mass(i, j, k);
       double ke = 0;
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < m.vel.ncomp(); ++d) {
         const double u = m.vel(i, j, k, d);
         t.momentum[d] += mass * u;
         ke += u * u;
@@ -466,7 +467,7 @@ std::vector<Field> IceSolver::outputFields() const {
           T = make(m.name + "_temperature", 1), th = make(m.name + "_volume_fraction", 1);
     forEach(owned_, [&](int i, int j, int k) {
       rho(i, j, k) = m.mass(i, j, k) / V;
-      for (int d = 0; d < 3; ++d) vel(i, j, k, d) = m.vel(i, j, k, d);
+      for (int d = 0; d < m.vel.ncomp(); ++d) vel(i, j, k, d) = m.vel(i, j, k, d);  // beyond: 0
       T(i, j, k) = m.eos->temperature(1.0 / m.spvol(i, j, k), m.eint(i, j, k));
       th(i, j, k) = m.theta(i, j, k);
     });

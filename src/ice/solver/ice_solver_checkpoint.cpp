@@ -2,6 +2,7 @@
 // what it would have read), the clock and the counters. What the scene gives again (the EOS, the
 // boundary conditions, the sources, the exchange coefficients, the initial pressure) the solver a
 // restart builds recomputes as the original run did; scratch is rewritten before it is read.
+#include <algorithm>
 #include <span>
 #include <stdexcept>
 
@@ -62,7 +63,17 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
 void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
   mixesValid_ = false;
   forEveryField(st_, [&](const std::string& name, core::Field& f) {
-    data.copyTo(cat(cat(prefix, "."), name), std::span<double>(f.data(), sizeOf(f)));
+    const std::string key = cat(cat(prefix, "."), name);
+    const std::span<double> out(f.data(), sizeOf(f));
+    // The velocities hold the mesh's dimension of components; a checkpoint written before
+    // (3 Dec 2026) holds 3, the ones beyond an exact zero: its first components are taken.
+    const bool velocity = name.ends_with(".vel") || name.ends_with(".velL");
+    const std::vector<double>& v = data.get(key);
+    if (out.empty()) return;  // a fluid's velL, eintL (ice_state.h): written by older programs, read by none
+    if (velocity && f.ncomp() < 3 && v.size() == static_cast<std::size_t>(3 * f.npts()))
+      std::copy(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(out.size()), out.begin());
+    else
+      data.copyTo(key, out);
   });
   const auto& c = data.get(prefix + ".clock");
   if (c.size() != 7 && c.size() != 9)  // 7: written before the energy audit (its sums start at 0)

@@ -126,7 +126,7 @@ void IceSolver::initialize(const core::Scene& scene) {
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       const core::RealVect u = reg ? reg->velocityAt(x) : core::RealVect{0, 0, 0};
-      for (int d = 0; d < 3; ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
+      for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
       if (m.external) {
         m.mass(i, j, k) = 0;
         m.spvol(i, j, k) = 1.0 / m.eos->densityFromPT(reg ? *reg->pressure : kReferencePressure, kReferenceTemperature);

@@ -3,7 +3,9 @@
 /// (phase 5) and the advection (phase 12) keep so as not to allocate every step. Nothing in
 /// here is state: each phase overwrites what it reads before reading it.
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/field/field.h"
@@ -31,24 +33,42 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 }
 
 /// Phase 12: per material the mass flux through each face (the other fluxes are that times a
-/// face value, computed again where they are applied), the directly advected internal energy
-/// m e per cell (the other conserved amounts are accumulated in the state's own fields), and the
-/// donors' positivity scale.
+/// face value, computed again where they are applied). The fluids are advected one after the
+/// other (their fluxes are independent once the mass fluxes are known), so the rest is shared
+/// by them: the conserved amounts being accumulated (m u, m (e + |u|^2 / 2), m e; the mass and
+/// m v in the state's own fields), the donors' positivity scale, the isentrope fits. The
+/// positivity blend's per-donor sums live for two slabs of cells only (rows in 2D, planes in
+/// 3D: pass 2 sweeps them in order and a slab's sums are complete once the faces above it are
+/// done), its factors only where they are below 1.
 struct AdvectionScratch {
   struct Material {
-    std::vector<double> eint;               // m e per stored cell
-    /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state (second
-    /// order only): Gruneisen coefficient (NaN where the fit is not admissible) and pi, so that
-    /// the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
-    std::vector<double> isenGamma, isenPi;
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
-    /// Per stored cell, kRemSums values: the donor's mass left after its outflows, and the
-    /// outflows' sums the positivity blend needs (advection_phase.cpp).
-    std::vector<double> remainder;
+  };
+  /// An owned donor whose outgoing face values are blended (factor b < 1).
+  struct Blend {
+    std::int64_t cell;
+    double b;
   };
   std::vector<Material> mat;
-  core::Field outflowScale;  // one component per material: scale of each donor's outflow
-  core::Field blend;         // one component per material: each donor's face-value blend (1: none)
+  core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected
+  /// Per material, the stored cells whose outflow scale is not 1 and their scale (computed once
+  /// per step for the fluid mass after advection, put back when the fluid is advected).
+  std::vector<std::vector<std::pair<std::int64_t, double>>> capped;
+  /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
+  /// m (e + |u|^2 / 2), m e; its mass after advection (for fluidMass).
+  std::array<std::vector<double>, 3> momentum;
+  std::vector<double> energy, eint, mass;
+  /// Per owned cell of two consecutive slabs, kRemSums values: the donor's mass left after its
+  /// outflows and the outflows' sums the positivity blend needs (advection_phase.cpp).
+  std::vector<double> remainder;
+  std::vector<Blend> blends;  // the blended donors of the fluid being advected
+  /// Each donor's face-value blend (1: none), with ghosts, of the fluid being advected; allocated
+  /// on the first step with a blend (most scenes have none).
+  core::Field blend;
+  /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state of the fluid
+  /// being advected (second order only): Gruneisen coefficient (NaN where the fit is not
+  /// admissible) and pi, so that the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
+  std::vector<double> isenGamma, isenPi;
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
   std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
 };

@@ -38,12 +38,20 @@ void IceSolver::computeSourcesAndLagrangian() {
     const Eos* eos;
     bool cold;  // the EOS has a cold energy (e - e_cold is the thermal energy the fix guards)
   };
+  // A fluid's velocity and energy become its Lagrangian ones in place (u and uL, e and eL below
+  // are the same arrays; ice_state.h): the start values are kept where a later phase reads them.
+  for (MaterialState& m : st_.mat) {
+    if (m.external) continue;
+    if (anyExternal_ || m.conductivity > 0) m.eintStart = m.eint;
+    if (m.viscosity > 0 || q1_ > 0 || q2_ > 0) m.velStart = m.vel;  // shock viscosity: advectFluids
+  }
   std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
-    ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(),
-              {m.vel.data(0), m.vel.data(1), m.vel.data(2)}, m.eint.data(),
-              {m.velL.data(0), m.velL.data(1), m.velL.data(2)}, m.eintL.data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
+    const auto u = core::components(m.vel);
+    const auto uL = core::components(m.lagVel());
+    ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(), {u[0], u[1], u[2]}, m.eint.data(),
+              {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
@@ -94,9 +102,9 @@ void IceSolver::computeSourcesAndLagrangian() {
       const double v = P.v[c], mass = P.m[c];
       const double f = P.th[c] > 0 ? volumeShare(P) / P.th[c] : (kbar > 0 && !cavity ? P.ka[c] / kbar : 0.0);
       double ke0 = 0, ke1 = 0;
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < dim; ++d) {
         const double u = P.u[d][c];
-        const double uL = d < dim ? u - dt * v * gp[d] : u;
+        const double uL = u - dt * v * gp[d];
         P.uL[d][c] = uL;
         ke0 += u * u;
         ke1 += uL * uL;
@@ -168,7 +176,7 @@ void IceSolver::computeSourcesAndLagrangian() {
         const double tc = m.theta(i, j, k);
         if (!(tc > 0)) return;
         const double v = m.spvol(i, j, k);
-        const double Tc = m.eos->temperature(1.0 / v, m.eint(i, j, k));
+        const double Tc = m.conductivity > 0 ? m.eos->temperature(1.0 / v, m.eintStart(i, j, k)) : 0.0;
         double du[3] = {0, 0, 0}, dT = 0;
         for (int d = 0; d < dim; ++d)
           for (int sgn = -1; sgn <= 1; sgn += 2) {
@@ -180,14 +188,14 @@ void IceSolver::computeSourcesAndLagrangian() {
             // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
             const double tb = std::min(tc, m.theta(n[0], n[1], n[2])) / tc / (mesh_.dx(d) * mesh_.dx(d));
             if (m.viscosity > 0)
-              for (int q = 0; q < dim; ++q) du[q] += tb * (m.vel(n[0], n[1], n[2], q) - m.vel(i, j, k, q));
+              for (int q = 0; q < dim; ++q) du[q] += tb * (m.velStart(n[0], n[1], n[2], q) - m.velStart(i, j, k, q));
             if (m.conductivity > 0) {
               const double vn = m.spvol(n[0], n[1], n[2]);
-              dT += tb * (m.eos->temperature(1.0 / vn, m.eint(n[0], n[1], n[2])) - Tc);
+              dT += tb * (m.eos->temperature(1.0 / vn, m.eintStart(n[0], n[1], n[2])) - Tc);
             }
           }
-        for (int q = 0; q < dim; ++q) m.velL(i, j, k, q) += dt_ * m.viscosity * v * du[q];
-        m.eintL(i, j, k) += dt_ * m.conductivity * v * dT;
+        for (int q = 0; q < dim; ++q) m.vel(i, j, k, q) += dt_ * m.viscosity * v * du[q];
+        m.eint(i, j, k) += dt_ * m.conductivity * v * dT;
       });
     }
   }
@@ -198,7 +206,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     MaterialState& m = st_.mat[s.material];
     const double* mass = m.mass.data();
     const double* theta = m.theta.data();
-    double* e = m.eintL.data();
+    double* e = m.lagEint().data();
     // power_density is per unit volume of the material: a cell the material shares (with a
     // solid's surface, say) receives power * theta * V (times its share inside the shape), so a
     // cell wholly inside heats at the rate of a full one.

@@ -10,13 +10,13 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
   };
   for (auto& m : mat) {
     m.mass = cell(m.name + "/mass", 1);
-    m.vel = cell(m.name + "/velocity", 3);
+    m.vel = cell(m.name + "/velocity", dim);
     m.eint = cell(m.name + "/internal_energy", 1);
     m.spvol = cell(m.name + "/specific_volume", 1, 1.0);
     m.theta = cell(m.name + "/volume_fraction", 1);
     m.kappa = cell(m.name + "/compressibility", 1);
-    m.velL = cell(m.name + "/velocity_L", 3);
-    m.eintL = cell(m.name + "/internal_energy_L", 1);
+    m.velL = m.external ? cell(m.name + "/velocity_L", dim) : Field();
+    m.eintL = m.external ? cell(m.name + "/internal_energy_L", 1) : Field();
     m.spvolL = cell(m.name + "/specific_volume_L", 1, 1.0);
     // Faces only in the mesh's directions; the exchange increments only where another
     // participant reads them (external materials): empty fields otherwise.

@@ -1,10 +1,13 @@
 #pragma once
 /// @brief The cell state of ICE: per-material SoA fields over this rank's cells plus ghosts.
 ///
-/// Every material (fluid or external) has its mass per cell, velocity (3 components, those beyond
-/// the mesh dimension stay zero), specific internal energy, specific volume (1 / material
+/// Every material (fluid or external) has its mass per cell, velocity (the mesh's dimension of
+/// components: 2D holds no z, which was an exact zero; core::components gives null beyond them;
+/// output pads it to 3), specific internal energy, specific volume (1 / material
 /// density) and volume fraction, and the Lagrangian (post-source, post-exchange) velocity,
-/// energy and specific volume; face velocities live on the faces normal to each direction that
+/// energy and specific volume (a fluid's Lagrangian velocity and energy are its state fields
+/// themselves, updated in place from the Lagrangian phase to the advection; an external
+/// material's are copies, its state being its own solver's: lagVel, lagEint); face velocities live on the faces normal to each direction that
 /// bound this rank's cells (face index i = low face of cell i). The pressure fields are shared by
 /// all materials. Fields are stored over the owned box grown by kGhost layers.
 #include <array>
@@ -13,6 +16,7 @@
 #include <vector>
 
 #include "ice/eos/eos.h"
+#include "core/field/components.h"
 #include "core/field/field.h"
 
 namespace mpmice::ice {
@@ -32,7 +36,18 @@ struct MaterialState {
   std::unique_ptr<Eos> eos;
   double viscosity = 0, conductivity = 0;
   core::Field mass, vel, eint, spvol, theta, kappa;  // kappa = 1 / (rho^micro c^2)
-  core::Field velL, eintL, spvolL;                   // Lagrangian values
+  core::Field velL, eintL;  // Lagrangian velocity and energy of an external material (empty for a fluid)
+  core::Field spvolL;       // Lagrangian specific volume
+  /// A fluid's start-of-step internal energy and velocity, copied before the Lagrangian phase
+  /// updates them in place, only where something after it reads them (the energy: heat
+  /// conduction, and in coupled runs the embedded trace's temperature change; the velocity:
+  /// viscosity, and the shock viscosity's stable step: its ghosts); empty otherwise.
+  core::Field eintStart, velStart;
+  /// The Lagrangian velocity and internal energy (see above).
+  core::Field& lagVel() { return external ? velL : vel; }
+  const core::Field& lagVel() const { return external ? velL : vel; }
+  core::Field& lagEint() { return external ? eintL : eint; }
+  const core::Field& lagEint() const { return external ? eintL : eint; }
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
   core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
   core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)

@@ -14,6 +14,7 @@
 #include <array>
 #include <vector>
 
+#include "core/field/components.h"
 #include "core/field/field.h"
 #include "core/mesh/mesh.h"
 #include "core/parallel/comm.h"
@@ -33,18 +34,9 @@ struct GridGeom {
   }
 };
 
-/// The component arrays of a node vector field for the hot loops (kernels take double* [3]):
-/// null beyond the field's components (the mesh's dimension).
-inline std::array<double*, 3> components(core::Field& f) {
-  std::array<double*, 3> c{nullptr, nullptr, nullptr};
-  for (int d = 0; d < f.ncomp() && d < 3; ++d) c[static_cast<std::size_t>(d)] = f.data(d);
-  return c;
-}
-inline std::array<const double*, 3> components(const core::Field& f) {
-  std::array<const double*, 3> c{nullptr, nullptr, nullptr};
-  for (int d = 0; d < f.ncomp() && d < 3; ++d) c[static_cast<std::size_t>(d)] = f.data(d);
-  return c;
-}
+/// The component arrays of a node vector field for the hot loops: core::components (null beyond
+/// the mesh's dimension).
+using core::components;
 
 class Grid {
  public:

@@ -87,8 +87,8 @@ TEST(IceAdvection, DonorInternalEnergyStaysPositiveWhenFaceValuesExceedItsOwn) {
       m.theta(i, 0, 0) = 1.0;
       m.spvol(i, 0, 0) = m.spvolL(i, 0, 0) = v[i];
       m.mass(i, 0, 0) = V / v[i];
-      m.eint(i, 0, 0) = m.eintL(i, 0, 0) = e[i];
-      for (int d = 0; d < 3; ++d) m.vel(i, 0, 0, d) = m.velL(i, 0, 0, d) = 0.0;
+      m.lagEint()(i, 0, 0) = e[i];  // a fluid's state energy and velocity are its Lagrangian ones
+      for (int d = 0; d < m.vel.ncomp(); ++d) m.lagVel()(i, 0, 0, d) = 0.0;
     }
     for (int i = 0; i <= 5; ++i) m.velFace[0](i, 0, 0) = 0.0;
     m.velFace[0](2, 0, 0) = -0.3 * dx / dt;  // out of cell 2 to the left

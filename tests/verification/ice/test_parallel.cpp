@@ -50,7 +50,7 @@ double compare(const core::Scene& sc, int steps) {
       const auto &a = par.state().mat[r], &b = ser.state().mat[r];
       const double m0 = std::max(b.mass(i, j, k), 1e-300);
       diff = std::max(diff, std::abs(a.mass(i, j, k) - b.mass(i, j, k)) / (m0 + 1e-12 * sc.mesh.cellVolume()));
-      for (int d = 0; d < 3; ++d) diff = std::max(diff, std::abs(a.vel(i, j, k, d) - b.vel(i, j, k, d)) / 100.0);
+      for (int d = 0; d < a.vel.ncomp(); ++d) diff = std::max(diff, std::abs(a.vel(i, j, k, d) - b.vel(i, j, k, d)) / 100.0);
     }
   });
   return test::comm().max(diff);
