@@ -385,10 +385,10 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
         qv += wi * nv[k];
         qw += wi * nw[k];
       });
-      const double q = qw > 0 ? qv / qw : 0.0;
+      const double qNodes = qw > 0 ? qv / qw : 0.0;
       // The solid's side: the node pressure at the heaviest node of the stencil; the node mass
       // and its gradient at the particle give the surface normal and how much of a surface it is.
-      double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = q;
+      double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = qNodes;
       st.forNodes(geom, [&](std::int64_t k, double w, double gx, double gy, double gz) {
         M += w * nm[k];
         G[0] += gx * nm[k];
@@ -401,6 +401,18 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       });
       const double gn = std::sqrt(G[0] * G[0] + G[1] * G[1] + G[2] * G[2]);
       const double a = M > 0 && gn > 0 ? std::min(1.0, kSurfaceLayerCells * h * gn / M) : 0.0;
+      // Inside the solid a particle takes its own cell's pressure: the cell whose pressure force
+      // it receives (addCellForce: each cell's force to its particles by mass shares). With the
+      // pressure interpolated from the neighbouring cells (cells -> nodes -> its stencil) inside
+      // the solid as well, the piston's copper rang up at a rate that does not fall with the step
+      // (FLIP: no damping but the pressure increment's, ~dt K), e-fold in ~0.1 ms below CFL 0.4 at
+      // 200 cells, until the trace of air in its cells followed the pressure swings to 1e9 K
+      // (docs/verification-coupled.md, "The piston stopped at small steps"). A surface particle
+      // (a -> 1) keeps the interpolated pressure: the gas pressure falls across its cell, and the
+      // excess over the solid side's acts along the normal (below; the cylinder's Eq. 13).
+      const auto own = cellOfParticle(mesh_, p_, i, cells_);
+      const double qCell = pcell(own[0], own[1], own[2]) - pRef;
+      const double q = qCell + a * (qNodes - qCell);
       // Stress added: (q - a e) I + a e n n, e = q - qIn: the excess over the solid side's pressure
       // acts along the normal only (a layer of isotropic excess would carry hoop load).
       const double V = p_.vol[i], ex = a * (q - qIn), iso = q - ex;
