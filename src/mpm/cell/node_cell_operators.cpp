@@ -11,11 +11,11 @@ namespace mpmice::mpm {
 namespace {
 /// The mean-stress correction's surface weight a (addCellPressureStress) below which a particle is
 /// inside the solid: there it takes its own cell's pressure, not the interpolated one. Inside a
-/// solid a is the node masses' round-off and particle-spacing noise (|grad M| h / M ~ 1e-5 in the
-/// piston's copper); a particle whose stencil reaches the surface's mass ramp has a ~ 0.1 .. 1.
-/// Measured insensitive between 1e-4 and 1e-2 (docs/verification-coupled.md, "The piston stopped
-/// at small steps"); with a itself as the weight (no cut) the full cells beside the added-mass
-/// slab's surface took part of their cell's pressure and its period went from -0.1 % to +2.2 %.
+/// solid a is the node masses' noise (uniform node masses give a = 0); a particle whose stencil
+/// reaches the surface's mass ramp has a ~ 0.1 .. 1. With a itself as the weight (no cut) the
+/// full cells beside the added-mass slab's surface took part of their cell's pressure and its
+/// period went from -0.1 % to +2.2 % (docs/coupling.md). Pinned by
+/// AdiabaticPiston.CopperStaysQuietAtSmallStepsOnFinerMeshes and the added-mass and cylinder tests.
 constexpr double kInteriorSurfaceWeight = 1e-3;
 }  // namespace
 
