@@ -150,8 +150,9 @@ TEST(AdiabaticPiston, ErrorDoesNotGrowAsTheStepShrinks) {
 // grew in the copper e-fold every ~0.1 ms (its cells' velocities 10 +- 2e-4 m/s at 0.1 ms, +- 0.15
 // m/s at 1 ms at CFL 0.1), because the mean-stress correction took the pressure interpolated from
 // the neighbouring cells inside the solid as well (docs/verification-coupled.md, "The piston
-// stopped at small steps"; the fix: src/mpm/cell/node_cell_operators.cpp). Asserted, to 2 ms at 200 cells, CFL 0.1 and to 4 ms at 100 cells, CFL
-// 0.05 (each past its old stop): the run completes, the piston's particles keep their velocities
+// stopped at small steps"; the fix: src/mpm/cell/node_cell_operators.cpp). Asserted, to 2 ms at
+// 200 cells, CFL 0.1 and to 4 ms at 100 cells, CFL 0.05 (each past its old stop): the run
+// completes, the piston's particles keep their velocities
 // within an atmosphere's acoustic velocity jump in copper, p0 / (rho c) (c its longitudinal wave
 // speed), of each other (measured 7.5e-4 and 1.5e-3 m/s, as at CFL 0.4: 6.8e-4 and 1.3e-3; before,
 // the copper's cells spread to +- 0.15 m/s by 1 ms), and the pressure error is that of CFL 0.4 to
