@@ -168,8 +168,8 @@ class NodeCellOperators {
   /// seed cylinder 0.0845 -> 0.0733 at dx 0.025, docs/coupling.md), except inside the solid (the
   /// surface weight a below kInteriorSurfaceWeight), where it is the pressure of the particle's own
   /// cell (the cell whose pressure force it receives, addCellForce): the interpolated one made the
-  /// piston's copper ring up at small steps (docs/verification-coupled.md, "The piston stopped at small steps"). Adds -sum_p V_p S_p grad w_ip
-  /// to the external node force, S_p = (q - a e) I + a e n n with q = p_p - pRef, e = q - q_in the
+  /// piston's copper ring up at small steps (docs/verification-coupled.md, "The piston stopped at
+  /// small steps"). Adds -sum_p V_p S_p grad w_ip to the external node force, S_p = (q - a e) I + a e n n with q = p_p - pRef, e = q - q_in the
   /// excess over the node value at the heaviest node of the particle's stencil (the solid's side),
   /// n the normal of the node mass and a in [0, 1] how much of a surface the particle is
   /// (kSurfaceLayerCells). The gas pressure the interpolation carries into the surface particles

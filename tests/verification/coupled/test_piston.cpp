@@ -54,7 +54,8 @@ struct PistonErrors {
   double worst = 0, final = 0, displacement = 0;
 };
 
-PistonErrors runPiston(core::Scene scene, double cfl = 0, const std::function<void(const CoupledRun&)>& afterStep = {}) {
+PistonErrors runPiston(core::Scene scene, double cfl = 0,
+                       const std::function<void(const CoupledRun&)>& afterStep = {}) {
   if (cfl > 0) scene.time.cfl = cfl;
   CoupledRun run(std::move(scene));
   const core::Scene& sc = run.scene;
@@ -172,7 +173,10 @@ TEST(AdiabaticPiston, CopperStaysQuietAtSmallStepsOnFinerMeshes) {
       return [&spread](const CoupledRun& run) {
         const auto& parts = run.mpm.particles();
         double lo = parts.v[0][0], hi = lo;
-        for (std::size_t i = 0; i < parts.size(); ++i) lo = std::min(lo, parts.v[0][i]), hi = std::max(hi, parts.v[0][i]);
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+          lo = std::min(lo, parts.v[0][i]);
+          hi = std::max(hi, parts.v[0][i]);
+        }
         spread = std::max(spread, hi - lo);
       };
     };
