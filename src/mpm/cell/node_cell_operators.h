@@ -170,7 +170,8 @@ class NodeCellOperators {
   /// cell (the cell whose pressure force it receives, addCellForce): the interpolated one made the
   /// piston's copper ring up at small steps (docs/verification-coupled.md, "The piston stopped at
   /// small steps"). Adds -sum_p V_p S_p grad w_ip to the external node force, S_p = (q - a e) I +
-  /// a e n n with q = p_p - pRef, e = q - q_in the excess over the node value at the heaviest node of the particle's stencil (the solid's side),
+  /// a e n n with q = p_p - pRef, e = q - q_in the excess over the node value at the heaviest node
+  /// of the particle's stencil (the solid's side),
   /// n the normal of the node mass and a in [0, 1] how much of a surface the particle is
   /// (kSurfaceLayerCells). The gas pressure the interpolation carries into the surface particles
   /// then pushes along the normal only: as an isotropic stress that layer carried hoop load and
