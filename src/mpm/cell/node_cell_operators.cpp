@@ -8,6 +8,17 @@
 
 namespace mpmice::mpm {
 
+namespace {
+/// The mean-stress correction's surface weight a (addCellPressureStress) below which a particle is
+/// inside the solid: there it takes its own cell's pressure, not the interpolated one. Inside a
+/// solid a is the node masses' noise (uniform node masses give a = 0); a particle whose stencil
+/// reaches the surface's mass ramp has a ~ 0.1 .. 1. With a itself as the weight (no cut) the
+/// full cells beside the added-mass slab's surface took part of their cell's pressure and its
+/// period went from -0.1 % to +2.2 % (docs/coupling.md). Pinned by
+/// AdiabaticPiston.CopperStaysQuietAtSmallStepsOnFinerMeshes and the added-mass and cylinder tests.
+constexpr double kInteriorSurfaceWeight = 1e-3;
+}  // namespace
+
 using core::Centering;
 using core::Field;
 
@@ -385,10 +396,10 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
         qv += wi * nv[k];
         qw += wi * nw[k];
       });
-      const double q = qw > 0 ? qv / qw : 0.0;
+      const double qNodes = qw > 0 ? qv / qw : 0.0;
       // The solid's side: the node pressure at the heaviest node of the stencil; the node mass
       // and its gradient at the particle give the surface normal and how much of a surface it is.
-      double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = q;
+      double M = 0, G[3] = {0, 0, 0}, heaviest = -1, qIn = qNodes;
       st.forNodes(geom, [&](std::int64_t k, double w, double gx, double gy, double gz) {
         M += w * nm[k];
         G[0] += gx * nm[k];
@@ -401,6 +412,20 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       });
       const double gn = std::sqrt(G[0] * G[0] + G[1] * G[1] + G[2] * G[2]);
       const double a = M > 0 && gn > 0 ? std::min(1.0, kSurfaceLayerCells * h * gn / M) : 0.0;
+      // Inside the solid (its stencil sees no surface: a below kInteriorSurfaceWeight) a particle
+      // takes its own cell's pressure, the cell whose pressure force it receives (addCellForce:
+      // each cell's force to its particles by mass shares); elsewhere the interpolated one, in
+      // which the gas pressure falls across the surface (the cylinder's Eq. 13, docs/coupling.md).
+      // With the interpolated pressure inside the solid as well, the piston's copper rang up at a
+      // rate that does not fall with the step (FLIP: no damping but the pressure increment's,
+      // ~dt K), e-fold in ~0.1 ms below CFL 0.4 at 200 cells, until the trace of air in its cells
+      // followed the pressure swings to 1e9 K (docs/verification-coupled.md, "The piston stopped
+      // at small steps").
+      double q = qNodes;
+      if (a < kInteriorSurfaceWeight) {
+        const auto own = cellOfParticle(mesh_, p_, i, cells_);
+        q = pcell(own[0], own[1], own[2]) - pRef;
+      }
       // Stress added: (q - a e) I + a e n n, e = q - qIn: the excess over the solid side's pressure
       // acts along the normal only (a layer of isotropic excess would carry hoop load).
       const double V = p_.vol[i], ex = a * (q - qIn), iso = q - ex;

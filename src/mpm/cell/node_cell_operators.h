@@ -9,7 +9,8 @@
 /// and the operators built on them, in the order of the MPM-ICE step:
 ///   cellState(m)                    cell mass, velocity, temperature, volume, specific volume of
 ///                                   solid m (absent-solid state where it does not reach)
-///   addCellPressureStress(p)        the mean-stress force: sigma + (p - p_ref) I, the excess over
+///   addCellPressureStress(p)        the mean-stress force: sigma + (p - p_ref) I, p interpolated to
+///                                   the particle (its own cell's inside the solid); the excess over
 ///                                   the solid side's pressure along the surface normal only
 ///   addCellForce(m, F)              a cell force to the particles of m in the cell (mass shares),
 ///                                   each to its nodes with its own shape function
@@ -164,9 +165,13 @@ class NodeCellOperators {
   /// p_p the cell pressure interpolated to the particle (cellToParticles: cells -> nodes -> the
   /// particle's shape function, as Uintah's MPMICE does; a particle in a surface cell then sees
   /// the pressure gradient across the surface instead of one cell's value: Eq. 13 error of the
-  /// seed cylinder 0.0845 -> 0.0733 at dx 0.025, docs/coupling.md). Adds -sum_p V_p S_p grad w_ip
-  /// to the external node force, S_p = (q - a e) I + a e n n with q = p_p - pRef, e = q - q_in the
-  /// excess over the node value at the heaviest node of the particle's stencil (the solid's side),
+  /// seed cylinder 0.0845 -> 0.0733 at dx 0.025, docs/coupling.md), except inside the solid (the
+  /// surface weight a below kInteriorSurfaceWeight), where it is the pressure of the particle's own
+  /// cell (the cell whose pressure force it receives, addCellForce): the interpolated one made the
+  /// piston's copper ring up at small steps (docs/verification-coupled.md, "The piston stopped at
+  /// small steps"). Adds -sum_p V_p S_p grad w_ip to the external node force, S_p = (q - a e) I +
+  /// a e n n with q = p_p - pRef, e = q - q_in the excess over the node value at the heaviest node
+  /// of the particle's stencil (the solid's side),
   /// n the normal of the node mass and a in [0, 1] how much of a surface the particle is
   /// (kSurfaceLayerCells). The gas pressure the interpolation carries into the surface particles
   /// then pushes along the normal only: as an isotropic stress that layer carried hoop load and
