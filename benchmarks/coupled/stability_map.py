@@ -27,7 +27,8 @@ def stop_reason(row):
         return "time limit"
     n = note.lower()
     for key, name in (("non-physical state", "health check"), ("equilibrium pressure", "equilibrium pressure"),
-                      ("dt_min", "time step collapse"), ("coupling.max_iterations", "coupling iterations"),
+                      ("dt_min", "time step collapse"), ("dt_collapse_fraction", "time step collapse"),
+                      ("coupling.max_iterations", "coupling iterations"),
                       ("converge", "no convergence")):
         if key in n:
             return name
