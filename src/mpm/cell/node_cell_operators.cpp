@@ -373,6 +373,11 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   const double* nm = g.mass.data();
   double h = mesh_.dx(0);
   for (int d = 1; d < mesh_.dim(); ++d) h = std::min(h, mesh_.dx(d));
+  const std::vector<unsigned char>& openFace = openFaceNodes();
+  openQ_.assign(openFace.size(), 0.0);  // q at the open-face nodes (for cellCouplingWork too)
+  openAny_ = false;
+  for (std::size_t k = 0; k < openFace.size(); ++k)
+    if (openFace[k] && nw[k] > 0 && nv[k] != 0.0) openQ_[k] = nv[k] / nw[k], openAny_ = true;
   stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
   stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -404,22 +409,48 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       // Stress added: (q - a e) I + a e n n, e = q - qIn: the excess over the solid side's pressure
       // acts along the normal only (a layer of isotropic excess would carry hoop load).
       const double V = p_.vol[i], ex = a * (q - qIn), iso = q - ex;
-      if (iso == 0.0 && ex == 0.0) continue;
       double n[3] = {0, 0, 0};
       if (gn > 0)
         for (int d = 0; d < 3; ++d) n[d] = G[d] / gn;
-      double* sf = &stressForce_[5 * i];
-      sf[0] = V * iso, sf[1] = V * ex, sf[2] = n[0], sf[3] = n[1], sf[4] = n[2];
+      if (iso == 0.0 && ex == 0.0) {
+        if (!openAny_) continue;
+      } else {
+        double* sf = &stressForce_[5 * i];
+        sf[0] = V * iso, sf[1] = V * ex, sf[2] = n[0], sf[3] = n[1], sf[4] = n[2];
+      }
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
         const double gg[3] = {gx, gy, gz};
         double ng = 0;
         for (int d = 0; d < D; ++d) ng += n[d] * gg[d];
         for (int d = 0; d < D; ++d) f[d][k] -= V * (iso * gg[d] + ex * n[d] * ng);
+        // A node on an open face: see openFaceNodes(). The normal component takes back the
+        // boundary term of the node's own value, -V_p q_k grad w_ip.
+        if (const unsigned char o = openFace[k])
+          for (int d = 0; d < D; ++d)
+            if (o & (1u << d)) f[d][k] += V * openQ_[k] * gg[d];
       });
     }
   });
   bcs_.fold(g.remap, Parity::Vector);
   addRemapToExternalForce();
+}
+
+const std::vector<unsigned char>& NodeCellOperators::openFaceNodes() {
+  const core::Box& nb = grid_.box();
+  if (openFace_.size() == static_cast<std::size_t>(nb.numPts())) return openFace_;
+  openFace_.assign(static_cast<std::size_t>(nb.numPts()), 0);
+  const int dim = mesh_.dim();
+  core::forEach(nb, [&](int i, int j, int k) {
+    const int idx[3] = {i, j, k};
+    unsigned char o = 0;
+    for (int d = 0; d < dim; ++d)
+      for (int s = 0; s < 2; ++s) {
+        const core::BoundaryType t = scene_.boundary[2 * d + s].type;
+        if (openFace(t) && idx[d] == (s == 0 ? 0 : mesh_.cells()[d])) o |= static_cast<unsigned char>(1u << d);
+      }
+    openFace_[static_cast<std::size_t>(nb.index(i, j, k))] = o;
+  });
+  return openFace_;
 }
 
 void NodeCellOperators::addRemapToExternalForce() {

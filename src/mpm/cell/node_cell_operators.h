@@ -59,6 +59,12 @@ inline std::array<int, 3> cellOfParticle(const core::Mesh& mesh, const ParticleS
   return c;
 }
 
+/// A mesh face the solid may cross as far as ICE is concerned: free and outflow (ICE fills their
+/// ghost cells with zero gradient; MPM leaves their nodes alone).
+inline bool openFace(core::BoundaryType t) {
+  return t == core::BoundaryType::Free || t == core::BoundaryType::Outflow;
+}
+
 /// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
 inline double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
   const int idx[3] = {i, j, k};
@@ -226,6 +232,16 @@ class NodeCellOperators {
   void spreadCellVectors(int material, F&& cellVector);
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
+  /// Per node of the grid's box: bit d set when the node lies on an open mesh face normal to d
+  /// (openFace(): free or outflow, where ICE's ghost cells continue its fields with zero gradient
+  /// and MPM leaves the nodes alone). The solid reaching such a face continues beyond it as far as
+  /// ICE is concerned, so ICE's pressure force -V theta grad p there uses the cell's own pressure
+  /// on the boundary face; the mean-stress correction, which must cancel it inside the solid, then
+  /// has no boundary term there either: at these nodes its normal component is the gradient form
+  /// -sum_p V_p (q_p - q_k) grad w_ip (q_k the node's value), zero for a uniform q. The weak form
+  /// left -q_k times the nodes' area on them, an unbalanced force A (p_0 - p_1) on a plate whose
+  /// boundary rows differ in pressure, which grew from round-off (docs/coupling.md, free faces).
+  const std::vector<unsigned char>& openFaceNodes();
   /// out = (a + b) / 2 at the nodes whose mass is above floor, 0 elsewhere, the mirror images
   /// beyond symmetry planes filled (the velocity a folded node force meets): cell_coupling_work.cpp.
   void meanNodeVelocity(const core::Field& a, const core::Field& b, double floor, core::Field& out) const;
@@ -264,6 +280,9 @@ class NodeCellOperators {
   std::vector<double> stressForce_;              // per particle: V iso, V ex, n (addCellPressureStress)
   std::uint64_t stressForceStamp_ = 0;
   double workFloor_ = 0;
+  std::vector<unsigned char> openFace_;        // openFaceNodes()
+  std::vector<double> openQ_;                  // addCellPressureStress: q at the open-face nodes (else 0)
+  bool openAny_ = false;                       // some open-face node has q != 0 this step
 };
 
 }  // namespace mpmice::mpm
