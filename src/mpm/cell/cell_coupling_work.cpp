@@ -70,14 +70,17 @@ void NodeCellOperators::addCellVectorPower(int material, const std::vector<doubl
   });
   const Field& nm = nodeMass_[static_cast<std::size_t>(material)];
   const int dim = mesh_.dim();
+  const CellCorners& cc = imageCorners(nm, "addCellVectorPower");
+  imageCorners(vbar, "addCellVectorPower");
+  const double* nmd = nm.data();
   core::forEach(cells_, [&](int i, int j, int k) {
     const auto s = static_cast<std::size_t>(cells_.index(i, j, k));
     const double mc = cm[s];
     if (!(mc > massFloor_) || pc.mass[s] > 0) return;
     double power = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) power += w * vec[3 * s + static_cast<std::size_t>(d)] * vbar(ni, nj, nk, d);
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      const double w = share * nmd[n] / mc;
+      for (int d = 0; d < dim; ++d) power += w * vec[3 * s + static_cast<std::size_t>(d)] * vb[d][n];
     });
     P[s] += scale * power;
   });

@@ -65,6 +65,35 @@ inline bool openFace(core::BoundaryType t) {
   return t == core::BoundaryType::Free || t == core::BoundaryType::Outflow;
 }
 
+/// The open faces of the mesh, per direction.
+struct OpenFaces {
+  std::array<bool, 3> low{false, false, false}, high{false, false, false};
+  bool any = false;
+  OpenFaces() = default;
+  OpenFaces(const std::array<core::BoundarySpec, 6>& faces, int dim) {
+    for (int d = 0; d < dim; ++d) {
+      low[d] = openFace(faces[2 * d].type);
+      high[d] = openFace(faces[2 * d + 1].type);
+      any = any || low[d] || high[d];
+    }
+  }
+  /// True when node index idx in direction d lies on an open face.
+  [[nodiscard]] bool onFace(const core::Mesh& mesh, int d, int idx) const {
+    return (low[d] && idx == 0) || (high[d] && idx == mesh.cells()[d]);
+  }
+};
+
+/// The node-to-cell share of node (i, j, k) with the images: 1/2 per direction at an interior node
+/// and at a node on an open face, 1 at a node on another mesh face (nodeShare otherwise).
+inline double imageShare(const core::Mesh& mesh, const OpenFaces& of, int i, int j, int k) {
+  const int idx[3] = {i, j, k};
+  double w = 1.0;
+  for (int d = 0; d < mesh.dim(); ++d)
+    if ((idx[d] > 0 && idx[d] < mesh.cells()[d]) || of.onFace(mesh, d, idx[d])) w *= 0.5;
+  return w;
+}
+
+
 /// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
 inline double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
   const int idx[3] = {i, j, k};
@@ -90,7 +119,8 @@ void forCellNodes(const core::Mesh& mesh, int i, int j, int k, F&& f) {
 class CellCorners {
  public:
   CellCorners() = default;
-  CellCorners(const core::Mesh& mesh, const core::Box& nodes);
+  /// With `open` (the images' average, open_face_images.h): imageShare instead of nodeShare.
+  CellCorners(const core::Mesh& mesh, const core::Box& nodes, const OpenFaces* open = nullptr);
   [[nodiscard]] const core::Box& nodes() const { return nodes_; }
   /// f(n, share) for each corner node of cell (i, j, k), n the flat index in a field on nodes().
   template <class F>
@@ -212,6 +242,11 @@ class NodeCellOperators {
   /// The node-to-cell corners of the node fields (all stored on the grid's node box), made on
   /// first use; throws std::logic_error naming `what` if field f is stored on another box.
   const CellCorners& corners(const core::Field& f, const char* what);
+  /// The same corners with the shares of the average of the solid's own node fields, whose open-face
+  /// nodes carry the zero-gradient images (open_face_images.h; every node-to-cell average of
+  /// nodeMass_ and of the fields deposited with it, and their transposes). Equal to corners()
+  /// without open faces.
+  const CellCorners& imageCorners(const core::Field& f, const char* what);
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
   const SolidCellState& current(int material, const char* op) const;
   /// nodeValue_ = (the average of the cells around each node of cellValue - offset, the sum of
@@ -274,6 +309,8 @@ class NodeCellOperators {
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
   core::Field faceTransport_;                  // solidFaceTransport() node-indexed faces (D, F per d)
   CellCorners corners_;                        // corners(): the node-to-cell average by flat offsets
+  CellCorners imageCorners_;                   // imageCorners(): with the images at open faces
+  OpenFaces open_;                             // the mesh's open faces
   // cellCouplingWork(): the forces of this step as they were spread (stamp: the generation).
   std::vector<std::vector<double>> cellForce_;   // per material: addCellForce()'s cell vectors (3 per owned cell)
   std::vector<std::uint64_t> cellForceStamp_;
