@@ -397,7 +397,10 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   openQ_.assign(openFace.size(), 0.0);  // q at the open-face nodes (for cellCouplingWork too)
   openAny_ = false;
   for (std::size_t k = 0; k < openFace.size(); ++k)
-    if (openFace[k] && nw[k] > 0 && nv[k] != 0.0) openQ_[k] = nv[k] / nw[k], openAny_ = true;
+    if (openFace[k]) {
+      const auto src = static_cast<std::size_t>(openSource_[k]);
+      if (nw[src] > 0 && nv[src] != 0.0) openQ_[k] = nv[src] / nw[src], openAny_ = true;
+    }
   stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
   stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -443,8 +446,9 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
         double ng = 0;
         for (int d = 0; d < D; ++d) ng += n[d] * gg[d];
         for (int d = 0; d < D; ++d) f[d][k] -= V * (iso * gg[d] + ex * n[d] * ng);
-        // A node on an open face: see openFaceNodes(). The normal component takes back the
-        // boundary term of the node's own value, -V_p q_k grad w_ip.
+        // A node at an open face (on it, beyond it, or within the reach of the stencils inside
+        // it): see openFaceNodes(). The normal component takes back the boundary term of the
+        // node's value, -V_p q_k grad w_ip.
         if (const unsigned char o = openFace[k])
           for (int d = 0; d < D; ++d)
             if (o & (1u << d)) f[d][k] += V * openQ_[k] * gg[d];
@@ -459,16 +463,21 @@ const std::vector<unsigned char>& NodeCellOperators::openFaceNodes() {
   const core::Box& nb = grid_.box();
   if (openFace_.size() == static_cast<std::size_t>(nb.numPts())) return openFace_;
   openFace_.assign(static_cast<std::size_t>(nb.numPts()), 0);
+  openSource_.assign(static_cast<std::size_t>(nb.numPts()), 0);
   const int dim = mesh_.dim();
   core::forEach(nb, [&](int i, int j, int k) {
-    const int idx[3] = {i, j, k};
+    int idx[3] = {i, j, k};
     unsigned char o = 0;
-    for (int d = 0; d < dim; ++d)
-      for (int s = 0; s < 2; ++s) {
-        const core::BoundaryType t = scene_.boundary[2 * d + s].type;
-        if (openFace(t) && idx[d] == (s == 0 ? 0 : mesh_.cells()[d])) o |= static_cast<unsigned char>(1u << d);
+    for (int d = 0; d < dim; ++d) {
+      const int n = mesh_.cells()[d];
+      if ((open_.low[d] && idx[d] < kImageLayers) || (open_.high[d] && idx[d] > n - kImageLayers)) {
+        o |= static_cast<unsigned char>(1u << d);
+        idx[d] = std::clamp(idx[d], 0, n);
       }
-    openFace_[static_cast<std::size_t>(nb.index(i, j, k))] = o;
+    }
+    const auto at = static_cast<std::size_t>(nb.index(i, j, k));
+    openFace_[at] = o;
+    openSource_[at] = nb.index(idx[0], idx[1], idx[2]);
   });
   return openFace_;
 }

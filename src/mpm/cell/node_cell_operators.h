@@ -267,15 +267,19 @@ class NodeCellOperators {
   void spreadCellVectors(int material, F&& cellVector);
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
-  /// Per node of the grid's box: bit d set when the node lies on an open mesh face normal to d
-  /// (openFace(): free or outflow, where ICE's ghost cells continue its fields with zero gradient
-  /// and MPM leaves the nodes alone). The solid reaching such a face continues beyond it as far as
-  /// ICE is concerned, so ICE's pressure force -V theta grad p there uses the cell's own pressure
-  /// on the boundary face; the mean-stress correction, which must cancel it inside the solid, then
-  /// has no boundary term there either: at these nodes its normal component is the gradient form
-  /// -sum_p V_p (q_p - q_k) grad w_ip (q_k the node's value), zero for a uniform q. The weak form
-  /// left -q_k times the nodes' area on them, an unbalanced force A (p_0 - p_1) on a plate whose
-  /// boundary rows differ in pressure, which grew from round-off (docs/coupling.md, free faces).
+  /// Per node of the grid's box: bit d set when the node lies at an open mesh face normal to d
+  /// (openFace(): free or outflow, where ICE's ghost cells continue its fields with zero
+  /// gradient and MPM leaves the nodes alone): beyond it, on it, or within kImageLayers - 1 node
+  /// layers inside it (the nodes whose stencil support crosses the face, B-splines included). The
+  /// solid reaching such a face continues beyond it as far as ICE is concerned, so ICE's pressure
+  /// force -V theta grad p there uses the cell's own pressure on the boundary face; the mean-stress
+  /// correction, which must cancel it inside the solid, then has no boundary term there either: at
+  /// these nodes its normal component is the gradient form -sum_p V_p (S_p - q_k I) grad w_ip, q_k
+  /// the node's value (beyond the face: at its nearest face node, zero gradient), zero for a
+  /// uniform q (also after the solid moved along the normal). The weak form left -q_k times the
+  /// nodes' area on them, an unbalanced force A (p_0 - p_1) on a plate whose boundary rows differ
+  /// in pressure, which grew from round-off (docs/coupling.md "Open faces").
+  /// openSource_: the flat index of the node whose value q_k is.
   const std::vector<unsigned char>& openFaceNodes();
   /// out = (a + b) / 2 at the nodes whose mass is above floor, 0 elsewhere, the mirror images
   /// beyond symmetry planes filled (the velocity a folded node force meets): cell_coupling_work.cpp.
@@ -318,6 +322,7 @@ class NodeCellOperators {
   std::uint64_t stressForceStamp_ = 0;
   double workFloor_ = 0;
   std::vector<unsigned char> openFace_;        // openFaceNodes()
+  std::vector<std::int64_t> openSource_;       // openFaceNodes(): the node q_k is read at
   std::vector<double> openQ_;                  // addCellPressureStress: q at the open-face nodes (else 0)
   bool openAny_ = false;                       // some open-face node has q != 0 this step
 };
