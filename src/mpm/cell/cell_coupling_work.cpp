@@ -70,14 +70,17 @@ void NodeCellOperators::addCellVectorPower(int material, const std::vector<doubl
   });
   const Field& nm = nodeMass_[static_cast<std::size_t>(material)];
   const int dim = mesh_.dim();
+  const CellCorners& cc = imageCorners(nm, "addCellVectorPower");
+  imageCorners(vbar, "addCellVectorPower");
+  const double* nmd = nm.data();
   core::forEach(cells_, [&](int i, int j, int k) {
     const auto s = static_cast<std::size_t>(cells_.index(i, j, k));
     const double mc = cm[s];
     if (!(mc > massFloor_) || pc.mass[s] > 0) return;
     double power = 0;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) power += w * vec[3 * s + static_cast<std::size_t>(d)] * vbar(ni, nj, nk, d);
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      const double w = share * nmd[n] / mc;
+      for (int d = 0; d < dim; ++d) power += w * vec[3 * s + static_cast<std::size_t>(d)] * vb[d][n];
     });
     P[s] += scale * power;
   });
@@ -103,24 +106,31 @@ void NodeCellOperators::cellCouplingWork(int material, Field& out, double dt) {
   double* W = out.data();
   const auto [b, e] = p_.materialRange(material);
   const GridGeom geom = g.geom();
+  const std::vector<unsigned char>& openFace = openFaceNodes();
+  const bool anyOpen = openAny_ && openQ_.size() == openFace.size();
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = b; i < e; ++i) {
       const double* sf = &stressForce_[5 * i];
-      if (sf[0] == 0.0 && sf[1] == 0.0) continue;
+      if (sf[0] == 0.0 && sf[1] == 0.0 && !anyOpen) continue;
       double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+      double open = 0;  // the open-face nodes' term (addCellPressureStress): V_p q_k grad w_ip . vbar_k
       st.compute(p_, i, geom);
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
         const double gg[3] = {gx, gy, gz};
         for (int a = 0; a < D; ++a)
           for (int c = 0; c < D; ++c) L[a][c] += vbd[a][k] * gg[c];
+        if (anyOpen)
+          if (const unsigned char o = openFace[k])
+            for (int a = 0; a < D; ++a)
+              if (o & (1u << a)) open += openQ_[k] * gg[a] * vbd[a][k];
       });
       double trace = 0, nLn = 0;
       for (int a = 0; a < D; ++a) {
         trace += L[a][a];
         for (int c = 0; c < D; ++c) nLn += sf[2 + a] * L[a][c] * sf[2 + c];
       }
-      W[pc.slot[i - b]] -= dt * (sf[0] * trace + sf[1] * nLn);
+      W[pc.slot[i - b]] -= dt * (sf[0] * trace + sf[1] * nLn - p_.vol[i] * open);
     }
   });
 }

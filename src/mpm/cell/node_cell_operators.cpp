@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/cell/open_face_images.h"
 #include "mpm/mpm_constants.h"
 #include "mpm/solver/kernels.h"
 
@@ -37,12 +38,13 @@ NodeCellOperators::NodeCellOperators(const core::Scene& scene, const core::Box& 
       states_(scene.materials.size()),
       nodeMass_(scene.materials.size()),
       deficit_(scene.materials.size()),
-      particleCells_(scene.materials.size()) {
+      particleCells_(scene.materials.size()),
+      open_(scene.boundary, scene.mesh.dim()) {
   const std::vector<int> solids = scene.solids();
   if (!solids.empty()) pRef_ = scene.materials[solids.front()].eos.get("threshold_pressure", kReferencePressure);
 }
 
-CellCorners::CellCorners(const core::Mesh& mesh, const core::Box& nodes) : nodes_(nodes) {
+CellCorners::CellCorners(const core::Mesh& mesh, const core::Box& nodes, const OpenFaces* open) : nodes_(nodes) {
   const int dim = mesh.dim();
   nc_ = 1 << dim;
   sy_ = nodes.length(0);
@@ -52,7 +54,8 @@ CellCorners::CellCorners(const core::Mesh& mesh, const core::Box& nodes) : nodes
     off_[c] = (c & 1) + (dim > 1 ? sy_ * ((c >> 1) & 1) : 0) + (dim > 2 ? sz_ * ((c >> 2) & 1) : 0);
   share_.resize(static_cast<std::size_t>(nodes.numPts()));
   core::forEach(nodes, [&](int i, int j, int k) {
-    share_[static_cast<std::size_t>(nodes.index(i, j, k))] = nodeShare(mesh, i, j, k);
+    share_[static_cast<std::size_t>(nodes.index(i, j, k))] =
+        open ? imageShare(mesh, *open, i, j, k) : nodeShare(mesh, i, j, k);
   });
 }
 
@@ -62,6 +65,15 @@ const CellCorners& NodeCellOperators::corners(const Field& f, const char* what) 
     throw std::logic_error(std::string("NodeCellOperators::") + what + ": node field '" + f.name() + "' is stored on " +
                            f.box().str() + ", not on the grid's node box " + corners_.nodes().str());
   return corners_;
+}
+
+const CellCorners& NodeCellOperators::imageCorners(const Field& f, const char* what) {
+  if (!open_.any) return corners(f, what);
+  if (!imageCorners_.nodes().ok()) imageCorners_ = CellCorners(mesh_, grid_.box(), &open_);
+  if (!(f.box() == imageCorners_.nodes()))
+    throw std::logic_error(std::string("NodeCellOperators::") + what + ": node field '" + f.name() + "' is stored on " +
+                           f.box().str() + ", not on the grid's node box " + imageCorners_.nodes().str());
+  return imageCorners_;
 }
 
 const SolidCellState& NodeCellOperators::current(int material, const char* op) const {
@@ -121,11 +133,16 @@ const SolidCellState& NodeCellOperators::cellState(int material) {
       double mv[3] = {0, 0, 0};
       for (int d = 0; d < D; ++d) mv[d] = m * p_.v[d][i];
       const double V = p_.vol[i], MT = p_.mass[i] * p_.temperature[i];
-      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) {
+      auto deposit = [&](std::int64_t k, double w) {
         mass[k] += m * w;
         for (int d = 0; d < D; ++d) mp[d][k] += mv[d] * w;
         vol[k] += V * w;
         mt[k] += MT * w;
+      };
+      st.forNodes(geom, [&](std::int64_t k, double w, double, double, double) { deposit(k, w); });
+      // Its zero-gradient images beyond open faces (open_face_images.h).
+      forOpenFaceImages(mesh_, open_, p_, i, geom, st, [&](const kernels::Stencil<S, D>& im, const int(&shift)[3]) {
+        forImageNodes(mesh_, geom, im, shift, deposit);
       });
     }
   });
@@ -138,9 +155,9 @@ const SolidCellState& NodeCellOperators::cellState(int material) {
   // zero): the reference specific volume and, as its neighbours' temperature is not known here,
   // the reference temperature.
   const double v0 = 1.0 / scene_.materials[material].density;
-  const CellCorners& cc = corners(nm, "cellState");
-  corners(mom, "cellState");
-  corners(vt, "cellState");
+  const CellCorners& cc = imageCorners(nm, "cellState");
+  imageCorners(mom, "cellState");
+  imageCorners(vt, "cellState");
   const double* nmd = nm.data();
   const double* momd[3] = {mom.data(0), mom.data(1), mom.data(2)};
   const double* vol = vt.data(0);
@@ -176,8 +193,8 @@ void NodeCellOperators::cellLagrangianMomentum(int material, Field& out) {
   current(material, "cellLagrangianMomentum");
   const Field& nm = nodeMass_[material];
   const Field& vL = grid_.velocityL;
-  const CellCorners& cc = corners(nm, "cellLagrangianMomentum");
-  corners(vL, "cellLagrangianMomentum");
+  const CellCorners& cc = imageCorners(nm, "cellLagrangianMomentum");
+  imageCorners(vL, "cellLagrangianMomentum");
   const double* nmd = nm.data();
   const auto vLd = components(vL);
   const int nv = vL.ncomp();  // the mesh's directions (the others' momentum is 0)
@@ -246,13 +263,16 @@ void NodeCellOperators::spreadCellVectors(int material, F&& cellVector) {
   bcs_.fold(g.remap, Parity::Vector);
   // Cells the solid reaches through its nodes only (no particle inside): the corner nodes in
   // proportion to their mass of m (the transpose of the node-to-cell average).
+  const CellCorners& cc = imageCorners(nm, "spreadCellVectors");
+  imageCorners(g.remap, "spreadCellVectors");
+  const double* nmd = nm.data();
   core::forEach(cells_, [&](int i, int j, int k) {
     const auto s = static_cast<std::size_t>(cells_.index(i, j, k));
     const double mc = cm[s];
     if (!(mc > massFloor_) || pc.mass[s] > 0) return;
-    forCellNodes(mesh_, i, j, k, [&](int ni, int nj, int nk, double share) {
-      const double w = share * nm(ni, nj, nk) / mc;
-      for (int d = 0; d < dim; ++d) g.remap(ni, nj, nk, d) += w * cellVector_[3 * s + d];
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) {
+      const double w = share * nmd[n] / mc;
+      for (int d = 0; d < dim; ++d) r[d][n] += w * cellVector_[3 * s + d];
     });
   });
 }
@@ -285,8 +305,8 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
   const Field& vL = grid_.velocityL;
   const int dim = mesh_.dim();
   // What the cell gains at its Lagrangian velocity (ICE's exchange counts this).
-  const CellCorners& cc = corners(nm, "applyCellMomentumIncrement");
-  corners(vL, "applyCellMomentumIncrement");
+  const CellCorners& cc = imageCorners(nm, "applyCellMomentumIncrement");
+  imageCorners(vL, "applyCellMomentumIncrement");
   const double* nmd = nm.data();
   const auto vLd = components(vL);
   core::forEach(cells_, [&](int i, int j, int k) {
@@ -384,6 +404,14 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   const double* nm = g.mass.data();
   double h = mesh_.dx(0);
   for (int d = 1; d < mesh_.dim(); ++d) h = std::min(h, mesh_.dx(d));
+  const std::vector<unsigned char>& openFace = openFaceNodes();
+  openQ_.assign(openFace.size(), 0.0);  // q at the open-face nodes (for cellCouplingWork too)
+  openAny_ = false;
+  for (std::size_t k = 0; k < openFace.size(); ++k)
+    if (openFace[k]) {
+      const auto src = static_cast<std::size_t>(openSource_[k]);
+      if (nw[src] > 0 && nv[src] != 0.0) openQ_[k] = nv[src] / nw[src], openAny_ = true;
+    }
   stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
   stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -429,22 +457,54 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       // Stress added: (q - a e) I + a e n n, e = q - qIn: the excess over the solid side's pressure
       // acts along the normal only (a layer of isotropic excess would carry hoop load).
       const double V = p_.vol[i], ex = a * (q - qIn), iso = q - ex;
-      if (iso == 0.0 && ex == 0.0) continue;
       double n[3] = {0, 0, 0};
       if (gn > 0)
         for (int d = 0; d < 3; ++d) n[d] = G[d] / gn;
-      double* sf = &stressForce_[5 * i];
-      sf[0] = V * iso, sf[1] = V * ex, sf[2] = n[0], sf[3] = n[1], sf[4] = n[2];
+      if (iso == 0.0 && ex == 0.0) {
+        if (!openAny_) continue;
+      } else {
+        double* sf = &stressForce_[5 * i];
+        sf[0] = V * iso, sf[1] = V * ex, sf[2] = n[0], sf[3] = n[1], sf[4] = n[2];
+      }
       st.forNodes(geom, [&](std::int64_t k, double, double gx, double gy, double gz) {
         const double gg[3] = {gx, gy, gz};
         double ng = 0;
         for (int d = 0; d < D; ++d) ng += n[d] * gg[d];
         for (int d = 0; d < D; ++d) f[d][k] -= V * (iso * gg[d] + ex * n[d] * ng);
+        // A node at an open face (on it, beyond it, or within the reach of the stencils inside
+        // it): see openFaceNodes(). The normal component takes back the boundary term of the
+        // node's value, -V_p q_k grad w_ip.
+        if (const unsigned char o = openFace[k])
+          for (int d = 0; d < D; ++d)
+            if (o & (1u << d)) f[d][k] += V * openQ_[k] * gg[d];
       });
     }
   });
   bcs_.fold(g.remap, Parity::Vector);
   addRemapToExternalForce();
+}
+
+const std::vector<unsigned char>& NodeCellOperators::openFaceNodes() {
+  const core::Box& nb = grid_.box();
+  if (openFace_.size() == static_cast<std::size_t>(nb.numPts())) return openFace_;
+  openFace_.assign(static_cast<std::size_t>(nb.numPts()), 0);
+  openSource_.assign(static_cast<std::size_t>(nb.numPts()), 0);
+  const int dim = mesh_.dim();
+  core::forEach(nb, [&](int i, int j, int k) {
+    int idx[3] = {i, j, k};
+    unsigned char o = 0;
+    for (int d = 0; d < dim; ++d) {
+      const int n = mesh_.cells()[d];
+      if ((open_.low[d] && idx[d] < kImageLayers) || (open_.high[d] && idx[d] > n - kImageLayers)) {
+        o |= static_cast<unsigned char>(1u << d);
+        idx[d] = std::clamp(idx[d], 0, n);
+      }
+    }
+    const auto at = static_cast<std::size_t>(nb.index(i, j, k));
+    openFace_[at] = o;
+    openSource_[at] = nb.index(idx[0], idx[1], idx[2]);
+  });
+  return openFace_;
 }
 
 void NodeCellOperators::addRemapToExternalForce() {

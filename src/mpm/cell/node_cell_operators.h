@@ -60,6 +60,41 @@ inline std::array<int, 3> cellOfParticle(const core::Mesh& mesh, const ParticleS
   return c;
 }
 
+/// A mesh face the solid may cross as far as ICE is concerned: free and outflow (ICE fills their
+/// ghost cells with zero gradient; MPM leaves their nodes alone).
+inline bool openFace(core::BoundaryType t) {
+  return t == core::BoundaryType::Free || t == core::BoundaryType::Outflow;
+}
+
+/// The open faces of the mesh, per direction.
+struct OpenFaces {
+  std::array<bool, 3> low{false, false, false}, high{false, false, false};
+  bool any = false;
+  OpenFaces() = default;
+  OpenFaces(const std::array<core::BoundarySpec, 6>& faces, int dim) {
+    for (int d = 0; d < dim; ++d) {
+      low[d] = openFace(faces[2 * d].type);
+      high[d] = openFace(faces[2 * d + 1].type);
+      any = any || low[d] || high[d];
+    }
+  }
+  /// True when node index idx in direction d lies on an open face.
+  [[nodiscard]] bool onFace(const core::Mesh& mesh, int d, int idx) const {
+    return (low[d] && idx == 0) || (high[d] && idx == mesh.cells()[d]);
+  }
+};
+
+/// The node-to-cell share of node (i, j, k) with the images: 1/2 per direction at an interior node
+/// and at a node on an open face, 1 at a node on another mesh face (nodeShare otherwise).
+inline double imageShare(const core::Mesh& mesh, const OpenFaces& of, int i, int j, int k) {
+  const int idx[3] = {i, j, k};
+  double w = 1.0;
+  for (int d = 0; d < mesh.dim(); ++d)
+    if ((idx[d] > 0 && idx[d] < mesh.cells()[d]) || of.onFace(mesh, d, idx[d])) w *= 0.5;
+  return w;
+}
+
+
 /// Share of a node's value that goes to each mesh cell around it (1 / number of such cells).
 inline double nodeShare(const core::Mesh& mesh, int i, int j, int k) {
   const int idx[3] = {i, j, k};
@@ -85,7 +120,8 @@ void forCellNodes(const core::Mesh& mesh, int i, int j, int k, F&& f) {
 class CellCorners {
  public:
   CellCorners() = default;
-  CellCorners(const core::Mesh& mesh, const core::Box& nodes);
+  /// With `open` (the images' average, open_face_images.h): imageShare instead of nodeShare.
+  CellCorners(const core::Mesh& mesh, const core::Box& nodes, const OpenFaces* open = nullptr);
   [[nodiscard]] const core::Box& nodes() const { return nodes_; }
   /// f(n, share) for each corner node of cell (i, j, k), n the flat index in a field on nodes().
   template <class F>
@@ -211,6 +247,11 @@ class NodeCellOperators {
   /// The node-to-cell corners of the node fields (all stored on the grid's node box), made on
   /// first use; throws std::logic_error naming `what` if field f is stored on another box.
   const CellCorners& corners(const core::Field& f, const char* what);
+  /// The same corners with the shares of the average of the solid's own node fields, whose open-face
+  /// nodes carry the zero-gradient images (open_face_images.h; every node-to-cell average of
+  /// nodeMass_ and of the fields deposited with it, and their transposes). Equal to corners()
+  /// without open faces.
+  const CellCorners& imageCorners(const core::Field& f, const char* what);
   /// The cell state of m, checked to be of this step generation (else std::logic_error naming op).
   const SolidCellState& current(int material, const char* op) const;
   /// nodeValue_ = (the average of the cells around each node of cellValue - offset, the sum of
@@ -231,6 +272,20 @@ class NodeCellOperators {
   void spreadCellVectors(int material, F&& cellVector);
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
+  /// Per node of the grid's box: bit d set when the node lies at an open mesh face normal to d
+  /// (openFace(): free or outflow, where ICE's ghost cells continue its fields with zero
+  /// gradient and MPM leaves the nodes alone): beyond it, on it, or within kImageLayers - 1 node
+  /// layers inside it (the nodes whose stencil support crosses the face, B-splines included). The
+  /// solid reaching such a face continues beyond it as far as ICE is concerned, so ICE's pressure
+  /// force -V theta grad p there uses the cell's own pressure on the boundary face; the mean-stress
+  /// correction, which must cancel it inside the solid, then has no boundary term there either: at
+  /// these nodes its normal component is the gradient form -sum_p V_p (S_p - q_k I) grad w_ip, q_k
+  /// the node's value (beyond the face: at its nearest face node, zero gradient), zero for a
+  /// uniform q (also after the solid moved along the normal). The weak form left -q_k times the
+  /// nodes' area on them, an unbalanced force A (p_0 - p_1) on a plate whose boundary rows differ
+  /// in pressure, which grew from round-off (docs/coupling.md "Open faces").
+  /// openSource_: the flat index of the node whose value q_k is.
+  const std::vector<unsigned char>& openFaceNodes();
   /// out = (a + b) / 2 at the nodes whose mass is above floor, 0 elsewhere, the mirror images
   /// beyond symmetry planes filled (the velocity a folded node force meets): cell_coupling_work.cpp.
   void meanNodeVelocity(const core::Field& a, const core::Field& b, double floor, core::Field& out) const;
@@ -263,12 +318,18 @@ class NodeCellOperators {
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)
   core::Field faceTransport_;                  // solidFaceTransport() node-indexed faces (D, F per d)
   CellCorners corners_;                        // corners(): the node-to-cell average by flat offsets
+  CellCorners imageCorners_;                   // imageCorners(): with the images at open faces
+  OpenFaces open_;                             // the mesh's open faces
   // cellCouplingWork(): the forces of this step as they were spread (stamp: the generation).
   std::vector<std::vector<double>> cellForce_;   // per material: addCellForce()'s cell vectors (3 per owned cell)
   std::vector<std::uint64_t> cellForceStamp_;
   std::vector<double> stressForce_;              // per particle: V iso, V ex, n (addCellPressureStress)
   std::uint64_t stressForceStamp_ = 0;
   double workFloor_ = 0;
+  std::vector<unsigned char> openFace_;        // openFaceNodes()
+  std::vector<std::int64_t> openSource_;       // openFaceNodes(): the node q_k is read at
+  std::vector<double> openQ_;                  // addCellPressureStress: q at the open-face nodes (else 0)
+  bool openAny_ = false;                       // some open-face node has q != 0 this step
 };
 
 }  // namespace mpmice::mpm

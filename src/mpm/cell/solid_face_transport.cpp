@@ -7,6 +7,7 @@
 // the difference of the face fluxes H'_f v_d prod g. Accumulated at the nodes of each particle's
 // stencil, then combined into faces with the node-to-cell shares.
 #include "mpm/cell/node_cell_operators.h"
+#include "mpm/cell/open_face_images.h"
 #include "mpm/solver/kernels.h"
 
 namespace mpmice::mpm {
@@ -28,10 +29,14 @@ void NodeCellOperators::solidFaceTransport(int material, core::Field& density, c
   // become cell masses.
   kernels::dispatch(shape_, dim, [&]<class S, int D>() {
     constexpr int N = S::kNodes;
-    kernels::Stencil<S, D> st;
+    kernels::Stencil<S, D> stencil;
     for (std::size_t q = b; q < e; ++q) {
-      st.compute(p_, q, geom);
+      stencil.compute(p_, q, geom);
       const double m = p_.mass[q];
+      const int none[3] = {0, 0, 0};
+      auto accumulate = [&](const kernels::Stencil<S, D>& st, const int(&shift)[3]) {
+      // Nodes inside the mesh in the shifted directions of an image (all nodes for the particle).
+      auto inside = [&](int d, int idx) { return shift[d] == 0 || (idx >= 0 && idx <= cells[d]); };
       for (int d = 0; d < D; ++d) {
         double hp[N];
         double above = 0;
@@ -46,12 +51,15 @@ void NodeCellOperators::solidFaceTransport(int material, core::Field& density, c
           if (hp[a] == 0.0) continue;
           int idx[3] = {0, 0, 0};
           idx[d] = st.base[d] + a;
+          if (!inside(d, idx[d])) continue;
           for (int b1 = 0; b1 < n1; ++b1) {
             const double w1 = e1 < D ? st.w[e1][b1] : 1.0;
             if (e1 < D) idx[e1] = st.base[e1] + b1;
+            if (e1 < D && !inside(e1, idx[e1])) continue;
             for (int b2 = 0; b2 < n2; ++b2) {
               const double w2 = e2 < D ? st.w[e2][b2] : 1.0;
               if (e2 < D) idx[e2] = st.base[e2] + b2;
+              if (e2 < D && !inside(e2, idx[e2])) continue;
               const double h = hp[a] * w1 * w2;
               ft(idx[0], idx[1], idx[2], d) += m * h;
               ft(idx[0], idx[1], idx[2], 3 + d) += mv * h;
@@ -59,6 +67,10 @@ void NodeCellOperators::solidFaceTransport(int material, core::Field& density, c
           }
         }
       }
+      };
+      accumulate(stencil, none);
+      // Its zero-gradient images beyond open faces (open_face_images.h), with its velocity.
+      forOpenFaceImages(mesh_, open_, p_, q, geom, stencil, accumulate);
     }
   });
   g.sumAndFill({&ft});
@@ -78,11 +90,11 @@ void NodeCellOperators::solidFaceTransport(int material, core::Field& density, c
           double share = 1.0;
           if (e1 < dim) {
             n[e1] = c[e1] + o1;
-            if (n[e1] > 0 && n[e1] < cells[e1]) share *= 0.5;
+            if ((n[e1] > 0 && n[e1] < cells[e1]) || open_.onFace(mesh_, e1, n[e1])) share *= 0.5;
           }
           if (e2 < dim) {
             n[e2] = c[e2] + o2;
-            if (n[e2] > 0 && n[e2] < cells[e2]) share *= 0.5;
+            if ((n[e2] > 0 && n[e2] < cells[e2]) || open_.onFace(mesh_, e2, n[e2])) share *= 0.5;
           }
           sd += share * ft(n[0], n[1], n[2], d);
           sf += share * ft(n[0], n[1], n[2], 3 + d);

@@ -459,3 +459,65 @@ TEST(NodeCellOperators, KineticDeficitIsBookedToTheCellTheIncrementCameFrom) {
     EXPECT_NEAR(def(ci, cj, ck), gain - nodes, 1e-12 * std::abs(gain)) << dim;
   }
 }
+
+// Open faces (free, outflow: ICE continues its fields beyond them with zero gradient): a block that
+// spans the mesh between two open y faces continues beyond them as far as the coupled step is
+// concerned (node_cell_operators.h openFaceNodes, open_face_images.h). (a) Moving every particle
+// along the face normal changes no cell's mass (the face nodes carry the zero-gradient images; the
+// face share of 1 read a gap of eps / dx in one boundary row and an overfill in the other); (b)
+// a uniform p - p_ref puts no force normal to the open faces on any node (the mean-stress
+// correction has no boundary term there: the weak form left -q times the face area on the face
+// nodes, the force that grew a plate at rest between free faces from round-off), while the
+// block's sides, real surfaces, keep their traction; also once the block has moved along the
+// normal (the nodes next to the gap its particles left: the gradient form reaches two node
+// layers into the mesh).
+TEST(NodeCellOperators, SolidContinuesBeyondOpenFaces) {
+  for (const core::BoundaryType open : {core::BoundaryType::Free, core::BoundaryType::Outflow})
+    for (const char* shape : {"linear", "gimp", "bspline2"})
+      for (int dim : {2, 3}) {
+        core::Scene s = scene(dim);
+        s.mpm.shape_function = shape;
+        s.boundary[2].type = s.boundary[3].type = open;
+        s.geometry.front().shape.lo[1] = 0.0;
+        s.geometry.front().shape.hi[1] = 2.0;  // the mesh's height (8 cells of 0.25)
+        const std::string what = std::string(shape) + " " + std::to_string(dim) + "D" +
+                                 (open == core::BoundaryType::Free ? " free" : " outflow");
+        MpmSolver solver(s, self());
+        start(solver);
+        const core::Field m0 = solver.cells().cellState(0).mass;
+        double largestCell = 0;
+        core::forEach(m0.box(), [&](int i, int j, int k) { largestCell = std::max(largestCell, m0(i, j, k)); });
+        // (b) The mean-stress force of a uniform p - p_ref.
+        auto normalForce = [&](const char* when) {
+          solver.computeInternalForces();
+          const core::Box owned = solver.decomposition().cellBox(0);
+          const double pRef = solver.cells().referencePressure();
+          core::Field pc("p", core::Centering::Cell, owned, 1, 0, pRef + 1.0e6);
+          const Grid& g = solver.grid();
+          const core::Field before = g.externalForce;
+          solver.cells().addCellPressureStress(pc);
+          double largestSide = 0, largestNormal = 0;
+          core::forEach(g.externalForce.box(), [&](int i, int j, int k) {
+            largestSide = std::max(largestSide, std::abs(g.externalForce(i, j, k, 0) - before(i, j, k, 0)));
+            largestNormal = std::max(largestNormal, std::abs(g.externalForce(i, j, k, 1) - before(i, j, k, 1)));
+          });
+          EXPECT_GT(largestSide, 0.0) << what << " " << when;
+          EXPECT_LT(largestNormal, 1e-12 * largestSide) << what << " " << when;
+        };
+        normalForce("at the start");
+        // (a) Every cell column the block fills holds the same mass in every row, and a shift of
+        // 0.1 dx along y moves no mass between rows.
+        core::forEach(m0.box(), [&](int i, int j, int k) {
+          EXPECT_NEAR(m0(i, j, k), m0(i, 0, k), 1e-12 * largestCell) << what << " cell " << i << "," << j << "," << k;
+        });
+        auto& p = solver.particles();
+        for (std::size_t i = 0; i < p.size(); ++i) p.x[1][i] += 0.025;
+        solver.beginStep(solver.stableTimeStep());
+        solver.particlesToGrid();
+        const core::Field& m1 = solver.cells().cellState(0).mass;
+        core::forEach(m0.box(), [&](int i, int j, int k) {
+          EXPECT_NEAR(m1(i, j, k), m0(i, j, k), 1e-12 * largestCell) << what << " cell " << i << "," << j << "," << k;
+        });
+        normalForce("moved by 0.1 dx");
+      }
+}
