@@ -35,8 +35,9 @@ print(f"""# The adiabatic piston (Uintah's pistonVal problem), MPM-ICE in 1D.
 # MPM's face transport of the piston's volume (coupling.solid_transport: mpm), to 20 ms: the
 # trapped gas's pressure within 0.15 % of p(t) at 50 cells (the shipped scene), 0.53 % at 25,
 # 0.04 % at 100, 0.01 % at 200 (order 2.06), the same at any time.cfl from 0.05 to 0.7 (issue 12:
-# the face velocity beside the gas the copper holds, src/ice/face/face_phase.cpp); the
-# displacement within 0.1 %. With ICE's face fluxes (solid_transport: ice) 4.0-4.3, 4.9 and 7.4 %
+# the face velocity beside the gas the copper holds, src/ice/face/face_phase.cpp; at 100 and 200
+# cells below CFL 0.4 since the copper's own-cell mean-stress correction, src/mpm/cell/
+# node_cell_operators.cpp: those runs stopped before); the displacement within 0.1 %. With ICE's face fluxes (solid_transport: ice) 4.0-4.3, 4.9 and 7.4 %
 # at 25, 50, 100 cells (measured before that fix).
 #
 # Check it:  coupler check configs/piston.yaml
