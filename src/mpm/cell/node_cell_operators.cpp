@@ -404,14 +404,19 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
   const double* nm = g.mass.data();
   double h = mesh_.dx(0);
   for (int d = 1; d < mesh_.dim(); ++d) h = std::min(h, mesh_.dx(d));
-  const std::vector<unsigned char>& openFace = openFaceNodes();
-  openQ_.assign(openFace.size(), 0.0);  // q at the open-face nodes (for cellCouplingWork too)
+  // q at the open-face nodes (for cellCouplingWork too); nothing to do without open faces.
   openAny_ = false;
-  for (std::size_t k = 0; k < openFace.size(); ++k)
-    if (openFace[k]) {
-      const auto src = static_cast<std::size_t>(openSource_[k]);
-      if (nw[src] > 0 && nv[src] != 0.0) openQ_[k] = nv[src] / nw[src], openAny_ = true;
-    }
+  const unsigned char* openFace = nullptr;
+  if (open_.any) {
+    const std::vector<unsigned char>& of = openFaceNodes();
+    openFace = of.data();
+    openQ_.assign(of.size(), 0.0);
+    for (std::size_t k = 0; k < of.size(); ++k)
+      if (of[k]) {
+        const auto src = static_cast<std::size_t>(openSource_[k]);
+        if (nw[src] > 0 && nv[src] != 0.0) openQ_[k] = nv[src] / nw[src], openAny_ = true;
+      }
+  }
   stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
   stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -474,6 +479,7 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
         // A node at an open face (on it, beyond it, or within the reach of the stencils inside
         // it): see openFaceNodes(). The normal component takes back the boundary term of the
         // node's value, -V_p q_k grad w_ip.
+        if (!openAny_) return;
         if (const unsigned char o = openFace[k])
           for (int d = 0; d < D; ++d)
             if (o & (1u << d)) f[d][k] += V * openQ_[k] * gg[d];
