@@ -133,13 +133,20 @@ void IceSolver::solveSemiImplicit() {
   Field& x = st_.dp;
   fillGhosts({{&x, FieldKind::Increment}}, {-1});
   // Correct the face velocities and the divergence.
+  const core::Box& sb = x.box();
+  const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  const double* xp = x.data();
   for (int d = 0; d < dim; ++d) {
     const double dx = mesh_.dx(d);
-    forEach(owned_.faces(d), [&](int i, int j, int k) {
-      int l[3] = {i, j, k};
-      l[d] -= 1;
-      const double g = (x(i, j, k) - x(l[0], l[1], l[2])) / dx;
-      for (int r = 0; r < nm; ++r) st_.mat[r].velFace[d](i, j, k) -= dt_ * semi_.mobility[r][d](i, j, k) * g;
+    const std::int64_t sd = strides[d];
+    const core::Box fb = owned_.faces(d);
+    double* uf[kMaxMaterials];
+    const double* phi[kMaxMaterials];
+    for (int r = 0; r < nm; ++r) uf[r] = st_.mat[r].velFace[d].data(), phi[r] = semi_.mobility[r][d].data();
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t c = sb.index(i, j, k), f = fb.index(i, j, k);
+      const double g = (xp[c] - xp[c - sd]) / dx;
+      for (int r = 0; r < nm; ++r) uf[r][f] -= dt_ * phi[r][f] * g;
     });
   }
   computeVolumeFluxes(st_, mesh_, owned_);
