@@ -33,9 +33,10 @@ struct Box {
   [[nodiscard]] bool contains(const Box& b) const {
     return !b.ok() || (ok() && contains(b.lo[0], b.lo[1], b.lo[2]) && contains(b.hi[0], b.hi[1], b.hi[2]));
   }
-  /// Linear offset of (i,j,k) inside this box, x fastest.
+  /// Linear offset of (i,j,k) inside this box, x fastest. Meaningful for a valid box only (the
+  /// lengths are taken without ok(): this runs once per cell in most loops).
   [[nodiscard]] std::int64_t index(int i, int j, int k) const {
-    return (i - lo[0]) + std::int64_t(length(0)) * ((j - lo[1]) + std::int64_t(length(1)) * (k - lo[2]));
+    return (i - lo[0]) + std::int64_t(hi[0] - lo[0] + 1) * ((j - lo[1]) + std::int64_t(hi[1] - lo[1] + 1) * (k - lo[2]));
   }
   /// Grow by n in the first `dim` directions (negative n shrinks).
   [[nodiscard]] Box grow(int n, int dim = 3) const;

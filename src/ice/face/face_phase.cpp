@@ -150,6 +150,29 @@ void IceSolver::computeFaceVelocities() {
   const CellMixes empty;
   const CellMixes& mix = riemannOn ? cellMixes() : empty;
   const std::int64_t mixStrides[3] = {1, mix.box.length(0), std::int64_t(mix.box.length(0)) * mix.box.length(1)};
+  // Each cell's held share (heldShare) per fluid, once: the faces on both sides read it.
+  HeldShares& H = held_;
+  if (exchSolids) {
+    H.box = owned_.grow(1, dim);
+    const auto n = static_cast<std::size_t>(H.box.numPts());
+    H.share.resize(static_cast<std::size_t>(nm));
+    for (int r = 0; r < nm; ++r) {
+      if (st_.mat[r].external) continue;
+      std::vector<double>& hs = H.share[static_cast<std::size_t>(r)];
+      hs.resize(n);
+      forEach(H.box, [&](int i, int j, int k) {
+        hs[static_cast<std::size_t>(H.box.index(i, j, k))] = heldShare(st_.mat, K_.data(), r, sb.index(i, j, k), dt);
+      });
+    }
+  }
+  const std::int64_t heldStrides[3] = {1, H.box.length(0), std::int64_t(H.box.length(0)) * H.box.length(1)};
+  // The semi-implicit face mobilities, computed here with the face velocities (same exchange).
+  std::vector<std::array<core::Field, 3>>* mobility = nullptr;
+  if (semiImplicit_) {
+    allocateSemiImplicitScratch();
+    mobility = &semi_.mobility;
+  }
+  semi_.mobilityFresh = semiImplicit_;
   for (int d = 0; d < dim; ++d) {
     const double dx = mesh_.dx(d);
     const double g = gravity_[d];
@@ -167,10 +190,11 @@ void IceSolver::computeFaceVelocities() {
       ptr[r] = {m.mass.data(), m.vel.data(d), m.velFace[d].data()};
     }
     const std::int64_t sdx = mixStrides[d];
+    const std::int64_t hsd = heldStrides[d];
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
       const double dpdx = (p[cR] - p[cL]) / dx;
-      double x[kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
+      double x[2 * kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
       faceMaterialValues(st_.mat, cL, cR, th, vf);
       openSolidFaceExchange(st_, d, fi, th);
       // Whether the face exchange leaves the fluids free of the solids here (no solid at the face,
@@ -210,7 +234,9 @@ void IceSolver::computeFaceVelocities() {
         // C the fluid's acoustic Courant number, is at most what dt v_r gives at C = 1 / 2.
         double held = 0;
         if (freeOfSolids && !st_.mat[r].external) {
-          const double h = std::max(heldShare(st_.mat, K_.data(), r, cL, dt), heldShare(st_.mat, K_.data(), r, cR, dt));
+          const double* hs = H.share[static_cast<std::size_t>(r)].data();
+          const std::int64_t hR = H.box.index(i, j, k), hL = hR - hsd;
+          const double h = std::max(hs[hL], hs[hR]);
           if (h > 0) {
             const double zL = impedance(st_.mat[r], cL), zR = impedance(st_.mat[r], cR);
             if (zL > 0 && zR > 0) held = h * dx / (zL + zR);
@@ -218,7 +244,21 @@ void IceSolver::computeFaceVelocities() {
         }
         x[r] = t1 - std::max({dt * vf[r], riemann, held}) * dpdx + dt * g;
       }
-      if (exch) faceExchange(nm, dt, K_.data(), th, vf, x);
+      // The semi-implicit face mobilities (assembleSemiImplicit) solve the same exchange with the
+      // face specific volumes as right-hand side: one factorisation for both.
+      if (mobility) {
+        double* phi = x + nm;
+        for (int r = 0; r < nm; ++r) phi[r] = vf[r];
+        if (exch) {
+          double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials];
+          for (int r = 0; r < nm; ++r) s[r] = th[r] / vf[r];
+          exchangeCouplings(nm, dt, K_.data(), th, w);
+          pointwiseExchange(nm, s, w, x, 2);
+        }
+        for (int r = 0; r < nm; ++r) (*mobility)[static_cast<std::size_t>(r)][d].data()[fi] = phi[r];
+      } else if (exch) {
+        faceExchange(nm, dt, K_.data(), th, vf, x);
+      }
       const int idx[3] = {i, j, k};
       const bool atLo = inLo && idx[d] == owned_.lo[d], atHi = inHi && idx[d] == owned_.hi[d] + 1;
       for (int r = 0; r < nm; ++r) {

@@ -28,7 +28,16 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
       sf.inside[d] = core::Field("solid_face_inside", core::Centering::Cell, fb, 1, 0);
     }
     // Cover and volume flux of the low face of stored cell (i, j, k) in d (0 on the domain's
-    // boundary faces and beyond them).
+    // boundary faces and beyond them). The external materials with a face transport, as flat
+    // arrays over the stored box (every cell field of the state is stored over it).
+    struct Ext {
+      const double *m, *v, *D, *F;
+    };
+    std::vector<Ext> ext;
+    for (const MaterialState& m : st.mat)
+      if (m.external && m.faceDensity.npts() != 0)
+        ext.push_back({m.mass.data(), m.spvol.data(), m.faceDensity.data(d), m.faceFlux.data(d)});
+    const std::int64_t sd = d == 0 ? 1 : (d == 1 ? sb.length(0) : std::int64_t(sb.length(0)) * sb.length(1));
     auto faceValues = [&](int i, int j, int k, double& cover, double& flux) {
       cover = flux = 0;
       const int idx[3] = {i, j, k};
@@ -36,12 +45,11 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
       int l[3] = {i, j, k};
       l[d] -= 1;
       if (!sb.contains(i, j, k) || !sb.contains(l[0], l[1], l[2])) return;
-      for (const MaterialState& m : st.mat) {
-        if (!m.external || m.faceDensity.npts() == 0) continue;
-        const double v = faceSpecificVolume(m.mass(l[0], l[1], l[2]), m.spvol(l[0], l[1], l[2]), m.mass(i, j, k),
-                                            m.spvol(i, j, k));
-        cover += m.faceDensity(i, j, k, d) * v;
-        flux += m.faceFlux(i, j, k, d) * v;
+      const std::int64_t c = sb.index(i, j, k), cl = c - sd;
+      for (const Ext& e : ext) {
+        const double v = faceSpecificVolume(e.m[cl], e.v[cl], e.m[c], e.v[c]);
+        cover += e.D[c] * v;
+        flux += e.F[c] * v;
       }
       cover = std::clamp(cover, 0.0, kMaxSolidFraction);
     };
@@ -55,18 +63,19 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
       const auto n = static_cast<std::size_t>(fx.index(i, j, k));
       faceValues(i, j, k, coverAt[n], fluxAt[n]);
     });
+    double *coverF = sf.cover[d].data(), *fluxF = sf.flux[d].data(), *insideF = sf.inside[d].data();
     forEach(fb, [&](int i, int j, int k) {
-      const std::int64_t n = fx.index(i, j, k);
+      const std::int64_t n = fx.index(i, j, k), f = fb.index(i, j, k);
       const double c = coverAt[static_cast<std::size_t>(n)];
       const double cLo = coverAt[static_cast<std::size_t>(n - step)];
       const double cHi = coverAt[static_cast<std::size_t>(n + step)];
-      sf.cover[d](i, j, k) = c;
-      sf.flux[d](i, j, k) = fluxAt[static_cast<std::size_t>(n)];
+      coverF[f] = c;
+      fluxF[f] = fluxAt[static_cast<std::size_t>(n)];
       // A relative tolerance on the comparisons: a uniform solid's plateau, or the half-covered
       // face of a solid one cell thick, must not flip with the round-off of the sums (the order
       // of the particles' and the ranks' contributions).
       const double cUp = c * (1 + kCoverTolerance);
-      sf.inside[d](i, j, k) =
+      insideF[f] =
           cUp >= 0.5 || (c > kPresentFraction && cUp >= cLo && cUp >= cHi) ? 1.0 : 0.0;
     });
   }

@@ -96,12 +96,12 @@ LinearResult HypreStructPcg::solve(const FaceStencil& A, const StencilBoundary& 
     v[0] = diag;
     for (int e = 0; e < 2 * H.hdim; ++e) v[1 + e] = -off[static_cast<std::size_t>(e)];  // 0 beyond A.dim
     H.rhs[c] = b(i, j, k);
-    H.sol[c] = 0.0;
+    H.sol[c] = x(i, j, k);  // the initial guess: what x holds (the previous step's increment)
     bb += H.rhs[c] * H.rhs[c];
   });
   LinearResult res;
-  x.fill(0.0);
   if (!(comm_.sum(bb) > 0)) {
+    x.fill(0.0);
     res.converged = true;
     return res;
   }

@@ -19,6 +19,7 @@ using core::forEach;
 
 void IceSolver::computeEquilibriumPressure() {
   mixesValid_ = false;  // theta, specific volume and kappa change here
+  semi_.mobilityFresh = false;
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
   // External (solid) materials enter with the volume their particles occupy, m_e v_e (v_e as

@@ -20,10 +20,9 @@ namespace mpmice::ice {
 using core::Field;
 using core::forEach;
 
-void IceSolver::assembleSemiImplicit() {
+void IceSolver::allocateSemiImplicitScratch() {
   const int dim = mesh_.dim();
   const int nm = numMaterials();
-  const double dt = dt_;
   SemiImplicitScratch& S = semi_;
   if (S.mobility.size() != static_cast<std::size_t>(nm)) {
     S.mobility.assign(static_cast<std::size_t>(nm), {});
@@ -33,6 +32,18 @@ void IceSolver::assembleSemiImplicit() {
     S.stencil.fillGhosts = [this](Field& f) { fillGhosts({{&f, FieldKind::Increment}}, {-1}); };
     S.rhs = Field("rhs", core::Centering::Cell, owned_, 1, 0);
   }
+}
+
+void IceSolver::assembleSemiImplicit() {
+  const int dim = mesh_.dim();
+  const int nm = numMaterials();
+  const double dt = dt_;
+  SemiImplicitScratch& S = semi_;
+  allocateSemiImplicitScratch();
+  // The mobilities come with this step's face velocities (computeFaceVelocities, the same
+  // exchange solve); computed here when the state was set in between.
+  const bool fresh = S.mobilityFresh;
+  S.mobilityFresh = false;
   // Face mobilities phi_r (the face velocity's response to a pressure gradient, -dt phi_r grad dp),
   // including the pointwise exchange at the face: (diag(s) + L(w)) phi = theta (s = theta / v), so
   // phi_r = v_r without exchange and 1 / rho_mixture for K -> infinity. Coefficients
@@ -48,15 +59,20 @@ void IceSolver::assembleSemiImplicit() {
     const SolidFaces& sf = st_.solidFaces;
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
-      double x[kMaxMaterials], th[kMaxMaterials];
-      faceMaterialValues(st_.mat, cL, cR, th, x);
-      openSolidFaceExchange(st_, d, fi, th);
-      if (exch) faceExchange(nm, dt, K_.data(), th, x, x);
+      double x[kMaxMaterials];
+      if (fresh) {
+        for (int r = 0; r < nm; ++r) x[r] = S.mobility[r][d].data()[fi];
+      } else {
+        double th[kMaxMaterials];
+        faceMaterialValues(st_.mat, cL, cR, th, x);
+        openSolidFaceExchange(st_, d, fi, th);
+        if (exch) faceExchange(nm, dt, K_.data(), th, x, x);
+        for (int r = 0; r < nm; ++r) S.mobility[r][d].data()[fi] = x[r];
+      }
       double b = 0, tsum = 0;
       for (int r = 0; r < nm; ++r) {
         const MaterialState& m = st_.mat[r];
-        const double uf = m.velFace[d](i, j, k);
-        S.mobility[r][d](i, j, k) = x[r];
+        const double uf = m.velFace[d].data()[fi];
         // With the solids' face transport their volume flux does not answer to the pressure:
         // the fluids' does, through the open part of the face (computeVolumeFluxes).
         if (sf.on && m.external) continue;
@@ -117,13 +133,20 @@ void IceSolver::solveSemiImplicit() {
   Field& x = st_.dp;
   fillGhosts({{&x, FieldKind::Increment}}, {-1});
   // Correct the face velocities and the divergence.
+  const core::Box& sb = x.box();
+  const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+  const double* xp = x.data();
   for (int d = 0; d < dim; ++d) {
     const double dx = mesh_.dx(d);
-    forEach(owned_.faces(d), [&](int i, int j, int k) {
-      int l[3] = {i, j, k};
-      l[d] -= 1;
-      const double g = (x(i, j, k) - x(l[0], l[1], l[2])) / dx;
-      for (int r = 0; r < nm; ++r) st_.mat[r].velFace[d](i, j, k) -= dt_ * semi_.mobility[r][d](i, j, k) * g;
+    const std::int64_t sd = strides[d];
+    const core::Box fb = owned_.faces(d);
+    double* uf[kMaxMaterials];
+    const double* phi[kMaxMaterials];
+    for (int r = 0; r < nm; ++r) uf[r] = st_.mat[r].velFace[d].data(), phi[r] = semi_.mobility[r][d].data();
+    forEach(fb, [&](int i, int j, int k) {
+      const std::int64_t c = sb.index(i, j, k), f = fb.index(i, j, k);
+      const double g = (xp[c] - xp[c - sd]) / dx;
+      for (int r = 0; r < nm; ++r) uf[r][f] -= dt_ * phi[r][f] * g;
     });
   }
   computeVolumeFluxes(st_, mesh_, owned_);

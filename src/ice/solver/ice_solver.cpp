@@ -345,6 +345,7 @@ IceSolver::Checkpoint IceSolver::checkpoint() const {
 
 void IceSolver::restore(const Checkpoint& c) {
   mixesValid_ = false;
+  semi_.mobilityFresh = false;
   std::size_t n = 0;
   forCheckpointFields(st_, [&](core::Field& x) { x = c.fields.at(n++); });
   t_ = c.t;

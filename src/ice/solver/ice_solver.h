@@ -126,6 +126,7 @@ class IceSolver {
   [[nodiscard]] const IceState& state() const { return st_; }
   [[nodiscard]] IceState& state() {
     mixesValid_ = false;  // the caller may change what the cached cell mixtures come from
+    semi_.mobilityFresh = false;
     return st_;
   }
   [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
@@ -190,6 +191,7 @@ class IceSolver {
                                                       const std::vector<std::vector<double>>& carried,
                                                       std::vector<std::pair<int, std::int64_t>>& held,
                                                       std::vector<std::pair<int, std::int64_t>>& cavitated);
+  void allocateSemiImplicitScratch();
   void assembleSemiImplicit();
   void solvePressureSystem();
 
@@ -235,6 +237,7 @@ class IceSolver {
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
   SemiImplicitScratch semi_;
+  HeldShares held_;
   AdvectionScratch adv_;
   // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
   // velocities and the face pressure of a step (none of the phases between them changes mass,

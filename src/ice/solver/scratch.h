@@ -23,8 +23,18 @@ struct SemiImplicitScratch {
   /// centre = kbar = sum_r theta_r kappa_r per cell, coef = dt^2 beta_f / dx^2 per face.
   linear::FaceStencil stencil;
   core::Field rhs;  // -dt div U* per owned cell
+  /// The mobilities were computed with this step's face velocities (computeFaceVelocities) and
+  /// nothing has set the state since (IceSolver::state()).
+  bool mobilityFresh = false;
   std::unique_ptr<linear::JacobiCg> cg;
   std::unique_ptr<linear::HypreStructPcg> hypre;  // pfmg_pcg, smg_pcg: grid and matrix kept
+};
+
+/// Phase 3: each fluid's held share (heldShare in face_phase.cpp) per cell of the owned box grown
+/// by one, computed once per step for the faces on both sides of a cell (external materials: empty).
+struct HeldShares {
+  core::Box box;
+  std::vector<std::vector<double>> share;
 };
 
 /// The quantities the advection carries (the order of the terms of its face fluxes).
