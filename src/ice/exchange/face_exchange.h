@@ -29,12 +29,14 @@ inline void faceMaterialValues(const std::vector<MaterialState>& mat, std::int64
   }
 }
 
-/// The exchange at one face over n materials: x (in: x^in, out: exchanged) may alias v.
-inline void faceExchange(int n, double dt, const double* K, const double* theta, const double* v, double* x) {
+/// The exchange at one face over n materials: x (in: x^in, out: exchanged) may alias v when nrhs
+/// is 1; with nrhs right-hand sides x[c * n + r], one factorisation for all.
+inline void faceExchange(int n, double dt, const double* K, const double* theta, const double* v, double* x,
+                         int nrhs = 1) {
   double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials];
   for (int r = 0; r < n; ++r) s[r] = theta[r] / v[r];
   exchangeCouplings(n, dt, K, theta, w);
-  pointwiseExchange(n, s, w, x, 1);
+  pointwiseExchange(n, s, w, x, nrhs);
 }
 
 }  // namespace mpmice::ice

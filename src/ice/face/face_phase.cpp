@@ -249,12 +249,7 @@ void IceSolver::computeFaceVelocities() {
       if (mobility) {
         double* phi = x + nm;
         for (int r = 0; r < nm; ++r) phi[r] = vf[r];
-        if (exch) {
-          double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials];
-          for (int r = 0; r < nm; ++r) s[r] = th[r] / vf[r];
-          exchangeCouplings(nm, dt, K_.data(), th, w);
-          pointwiseExchange(nm, s, w, x, 2);
-        }
+        if (exch) faceExchange(nm, dt, K_.data(), th, vf, x, 2);
         for (int r = 0; r < nm; ++r) (*mobility)[static_cast<std::size_t>(r)][d].data()[fi] = phi[r];
       } else if (exch) {
         faceExchange(nm, dt, K_.data(), th, vf, x);
