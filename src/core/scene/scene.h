@@ -221,7 +221,7 @@ struct IceOptions {
   double shock_viscosity_linear = 0;
   // Face pressure: "riemann" (the two-shock approximate Riemann solution at faces in compression,
   // docs/ice.md) or "average" (the density-weighted average of the cell pressures).
-  std::string face_pressure = "riemann";
+  std::string face_pressure = "auto";  // auto: riemann for fluids alone, average with solids
   double shock_viscosity_quadratic = 0;
   // Traces: a fluid below this fraction of a cell's fluid mass is held at its carried volume when
   // the cell's pressure is below its own (docs/ice.md "Traces"); 0 turns the rule off.

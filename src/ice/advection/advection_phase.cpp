@@ -354,8 +354,8 @@ void IceSolver::advectFluids() {
 
     // The isentrope fits of the entropy-bounded face state (second order; first order takes the
     // donor's own state, which is on its isentrope). Only with the Riemann face pressure: the
-    // average face pressure (and coupled runs, which use it) has no dissipation at shocks, every
-    // shock rings there (up to +65 %) and the bound cannot make up for it; with it, Toro's test 2
+    // average face pressure has no dissipation at shocks, every shock rings there (up to +65 %)
+    // and the bound cannot make up for it; with it, Toro's test 2
     // with superbee and water against air with superbee stopped on a negative temperature
     // (docs/ice.md "The full sweep").
     const bool entropyBound = Second && riemannFacePressureOn();

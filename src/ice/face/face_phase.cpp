@@ -119,15 +119,17 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
     const std::int64_t c = sb.index(i, j, k);
     const auto o = static_cast<std::size_t>(box.index(i, j, k));
     double mass = 0, mu[3] = {0, 0, 0}, dn = 0, kap = 0;
+    bool solid = false;
     for (const MaterialState& m : st.mat) {
       const double mm = m.mass.data()[c];
       mass += mm;
+      solid = solid || (m.external && mm > 0);
       for (int d = 0; d < dim; ++d) mu[d] += mm * m.vel.data(d)[c];
       const double t = m.theta.data()[c];
       if (t > 0) dn += t / m.spvol.data()[c], kap += t * m.kappa.data()[c];
     }
     x.rho[o] = dn;
-    x.z[o] = dn > 0 && kap > 0 ? std::sqrt(dn / kap) : 0.0;
+    x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)][o] = mass > 0 ? mu[d] / mass : 0.0;
   });
 }

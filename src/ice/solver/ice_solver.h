@@ -215,10 +215,12 @@ class IceSolver {
   long linItersTotal_ = 0;
   int limiter_ = 1;
   double q1_ = 0, q2_ = 0;  // shock viscosity (linear, quadratic)
-  bool riemannFacePressure_ = true;  // ice.face_pressure: riemann (fluids only)
-  /// The Riemann face pressure is in use: asked for, and no external materials (coupled runs
-  /// keep the average: the energy correction that returns its work as heat is off there).
-  [[nodiscard]] bool riemannFacePressureOn() const { return riemannFacePressure_ && !anyExternal_; }
+  bool riemannFacePressure_ = true;  // ice.face_pressure: riemann, or auto without external materials
+  /// The Riemann face pressure is in use. With external materials (coupled runs, asked for by
+  /// `riemann`) it acts only at faces whose two cells hold none of them: computeCellMixes gives a
+  /// cell with a solid no impedance, which turns off the face pressure's dissipation, the face
+  /// velocity's Riemann response and their time-step rate at its faces (docs/ice.md, method step 6).
+  [[nodiscard]] bool riemannFacePressureOn() const { return riemannFacePressure_; }
   double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
   int solverMaxIt_ = 1000;
   core::RealVect gravity_{0, 0, 0};

@@ -3,8 +3,9 @@
 // shock reflected from a rigid wall (the slab's impedance is ~1e5 times the gas's), and the steel's
 // longitudinal wave speed sqrt((K + 4G/3) / rho) (uniaxial strain). Run at the scene's spacing, 2x
 // it and half of it: the mean pressure of the reflected plateau within 2 % of the exact one at the
-// scene's spacing and converging; the speed of the stress front between two points of the slab
-// (the times its stress passes half the transmitted level) within 2 %.
+// scene's spacing and converging, without ringing (max - min within 3 % of p5 at the scene's
+// spacing: the scene's ice.face_pressure riemann); the speed of the stress front between two points
+// of the slab (the times its stress passes half the transmitted level) within 2 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,9 +45,13 @@ SlabResult runSlab(double dx) {
   const core::Scene& s = run.scene;
   const SlabExact ex = study::slabExact(s);
   const double slabEnd = regionNamed(s, "slab").shape.hi[0];
-  // Two probes in the slab, a sixth and five sixths through it: the particles nearest them.
+  // Two probes in the slab, a sixth and half-way through it: the particles nearest them. Not
+  // nearer the back: the wave reflected there (a mirror plane) returns to a probe a sixth from it
+  // 2 L / (6 c) = 17 us after the front, while the load still rises over 2-3 cells of the
+  // reflected shock (~35 us at dx 0.005), so it passed the half level early there (6243 m/s at
+  // five sixths against 5817 half-way, dx 0.005; docs/verification-coupled.md).
   const auto& p = run.mpm.particles();
-  const double probeX[2] = {ex.xWall + (slabEnd - ex.xWall) / 6, ex.xWall + 5 * (slabEnd - ex.xWall) / 6};
+  const double probeX[2] = {ex.xWall + (slabEnd - ex.xWall) / 6, ex.xWall + (slabEnd - ex.xWall) / 2};
   std::int64_t probeId[2] = {-1, -1};
   double x0[2] = {0, 0};
   for (int q = 0; q < 2; ++q) {
@@ -100,16 +105,21 @@ TEST(ShockOnSteelSlab, ReflectedPressureAndSteelWaveSpeed) {
   const SlabExact ex = study::slabExact(scene);
   const double dx0 = scene.mesh.spacing()[0];
   std::printf("exact: p5 %.6g Pa, reflected shock %.4g m/s, steel c_L %.5g m/s\n", ex.p5, ex.Wr, ex.cSolid);
-  std::vector<double> dxs = {2 * dx0, dx0, 0.5 * dx0}, pErr, cErr;
+  std::vector<double> dxs = {2 * dx0, dx0, 0.5 * dx0}, pErr, cErr, plateauMin, plateauMax;
   for (double dx : dxs) {
     const SlabResult r = runSlab(dx);
     pErr.push_back(std::abs(r.plateauMean - ex.p5) / ex.p5);
+    plateauMin.push_back(r.plateauMin);
+    plateauMax.push_back(r.plateauMax);
     cErr.push_back(std::abs(r.frontSpeed - ex.cSolid) / ex.cSolid);
     std::printf("dx %.4g: plateau mean %.6g (error %.4f; min %.4g, max %.4g), front speed %.5g (error %.4f)\n", dx,
                 r.plateauMean, pErr.back(), r.plateauMin, r.plateauMax, r.frontSpeed, cErr.back());
   }
   std::printf("reflected pressure: fitted order %.3f\n", observedOrder(dxs, pErr));
   EXPECT_LT(pErr[1], 0.02) << "reflected pressure at the scene's spacing";
+  // The plateau without ringing (the Riemann face pressure between fluid cells, the scene's
+  // ice.face_pressure): max - min 0.9 % of p5 at the scene's spacing (24 % with the average).
+  EXPECT_LT((plateauMax[1] - plateauMin[1]) / ex.p5, 0.03) << "the reflected plateau rings";
   EXPECT_LT(pErr[2], pErr[0]) << "the reflected pressure converges";
   for (std::size_t k = 0; k < dxs.size(); ++k) EXPECT_LT(cErr[k], 0.02) << "steel wave speed at dx " << dxs[k];
 }
