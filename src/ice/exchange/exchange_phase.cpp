@@ -20,8 +20,6 @@
 
 namespace mpmice::ice {
 
-using core::forEach;
-
 void IceSolver::exchange() {
   const int nm = numMaterials();
   const int dim = mesh_.dim();
@@ -49,34 +47,38 @@ void IceSolver::exchange() {
               m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
-  forEach(owned_, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k), o = owned_.index(i, j, k);
+  // One cell (stored index c, owned index o). NM, DIM > 0: the number of materials and the mesh's
+  // dimension fixed at compile time (the small loops unroll; the same operations in the same
+  // order as with the run-time counts, 0).
+  auto cell = [&]<int NM, int DIM>(std::int64_t c, std::int64_t o) {
+    const int n = NM > 0 ? NM : nm;
+    const int nd = DIM > 0 ? DIM : dim;
     double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials], x[3 * kMaxMaterials], x0[3 * kMaxMaterials];
     double mass[kMaxMaterials], th[kMaxMaterials];
-    for (int r = 0; r < nm; ++r) {
+    for (int r = 0; r < n; ++r) {
       mass[r] = ptr[r].m[c];
       th[r] = ptr[r].th[c];
     }
     if (anyK_) {
-      for (int r = 0; r < nm; ++r) {
+      for (int r = 0; r < n; ++r) {
         s[r] = mass[r];
-        for (int d = 0; d < dim; ++d) x[d * nm + r] = x0[d * nm + r] = ptr[r].uL[d][c];
+        for (int d = 0; d < nd; ++d) x[d * n + r] = x0[d * n + r] = ptr[r].uL[d][c];
       }
-      exchangeCouplings(nm, dtV, K_.data(), th, w);
-      pointwiseExchange(nm, s, w, x, dim);
+      exchangeCouplings(n, dtV, K_.data(), th, w);
+      pointwiseExchange(n, s, w, x, nd);
       double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
-      for (int r = 0; r < nm; ++r) {
-        for (int d = 0; d < dim; ++d) {
-          const double un = x[d * nm + r], uo = x0[d * nm + r];
+      for (int r = 0; r < n; ++r) {
+        for (int d = 0; d < nd; ++d) {
+          const double un = x[d * n + r], uo = x0[d * n + r];
           D += 0.5 * mass[r] * (uo - un) * (uo + un);
         }
         C += mass[r] * ptr[r].cv;
       }
-      for (int r = 0; r < nm; ++r) {
+      for (int r = 0; r < n; ++r) {
         const Ptr& Q = ptr[r];
         const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
-        for (int d = 0; d < dim; ++d) {
-          const double un = x[d * nm + r], uo = x0[d * nm + r];
+        for (int d = 0; d < nd; ++d) {
+          const double un = x[d * n + r], uo = x0[d * n + r];
           Q.uL[d][c] = un;
           if (Q.external) Q.dMom[d][o] = mass[r] * (un - uo);
         }
@@ -85,20 +87,34 @@ void IceSolver::exchange() {
       }
     }
     if (anyH_) {
-      for (int r = 0; r < nm; ++r) {
+      for (int r = 0; r < n; ++r) {
         const MaterialState& m = st_.mat[r];
         s[r] = mass[r] * ptr[r].cv;
         x[r] = x0[r] = m.eos->temperature(1.0 / ptr[r].vL[c], ptr[r].eL[c]);
       }
-      exchangeCouplings(nm, dtV, H_.data(), th, w);
-      pointwiseExchange(nm, s, w, x, 1);
-      for (int r = 0; r < nm; ++r) {
+      exchangeCouplings(n, dtV, H_.data(), th, w);
+      pointwiseExchange(n, s, w, x, 1);
+      for (int r = 0; r < n; ++r) {
         const double de = ptr[r].cv * (x[r] - x0[r]);
         ptr[r].eL[c] += de;
         if (ptr[r].external) ptr[r].dE[o] += mass[r] * de;
       }
     }
-  });
+  };
+  // The owned cells in forEach's order, by rows (flat indices: o counts the owned cells).
+  auto sweep = [&]<int NM, int DIM>() {
+    std::int64_t o = 0;
+    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+        std::int64_t c = sb.index(owned_.lo[0], j, k);
+        for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+      }
+  };
+  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
+  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
+  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
+  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
+  else sweep.template operator()<0, 0>();
   relaxEmbeddedFluidTemperatures();
 }
 
