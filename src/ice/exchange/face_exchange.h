@@ -31,12 +31,19 @@ inline void faceMaterialValues(const std::vector<MaterialState>& mat, std::int64
 
 /// The exchange at one face over n materials: x (in: x^in, out: exchanged) may alias v when nrhs
 /// is 1; with nrhs right-hand sides x[c * n + r], one factorisation for all.
-inline void faceExchange(int n, double dt, const double* K, const double* theta, const double* v, double* x,
-                         int nrhs = 1) {
+/// N > 0: n fixed at compile time (the loops unroll; the same operations in the same order).
+template <int N>
+inline void faceExchangeFixed(int n, double dt, const double* K, const double* theta, const double* v, double* x,
+                              int nrhs) {
+  if constexpr (N > 0) n = N;
   double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials];
   for (int r = 0; r < n; ++r) s[r] = theta[r] / v[r];
   exchangeCouplings(n, dt, K, theta, w);
   pointwiseExchange(n, s, w, x, nrhs);
+}
+inline void faceExchange(int n, double dt, const double* K, const double* theta, const double* v, double* x,
+                         int nrhs = 1) {
+  faceExchangeFixed<0>(n, dt, K, theta, v, x, nrhs);
 }
 
 }  // namespace mpmice::ice

@@ -182,22 +182,33 @@ void IceSolver::computeFaceVelocities() {
     const core::Box fb = owned_.faces(d);
     const bool inLo = bc_.touches(2 * d) && bc_.type(2 * d) == core::BoundaryType::Inflow;
     const bool inHi = bc_.touches(2 * d + 1) && bc_.type(2 * d + 1) == core::BoundaryType::Inflow;
+    // Per material: mass, velocity (component d), face velocity, volume fraction, specific volume.
     struct Ptr {
       const double *m, *u;
       double* uf;
+      const double *th, *sv;
+      bool external;
     };
-    std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+    Ptr ptr[kMaxMaterials];
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      ptr[r] = {m.mass.data(), m.vel.data(d), m.velFace[d].data()};
+      ptr[r] = {m.mass.data(), m.vel.data(d), m.velFace[d].data(), m.theta.data(), m.spvol.data(), m.external};
     }
     const std::int64_t sdx = mixStrides[d];
     const std::int64_t hsd = heldStrides[d];
-    forEach(fb, [&](int i, int j, int k) {
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
+    // The face (i, j, k): stored cell cR = cL + sd on its high side, face index fi, cR's index R in
+    // the cell mixtures' box and hR in the held shares'. NM > 0: the number of materials fixed at
+    // compile time (the small loops unroll; the same operations in the same order).
+    auto face = [&]<int NM>(int i, int j, int k, std::int64_t cR, std::int64_t fi, std::int64_t R, std::int64_t hR) {
+      const int n = NM > 0 ? NM : nm;
+      const std::int64_t cL = cR - sd;
       const double dpdx = (p[cR] - p[cL]) / dx;
       double x[2 * kMaxMaterials], th[kMaxMaterials], vf[kMaxMaterials];
-      faceMaterialValues(st_.mat, cL, cR, th, vf);
+      for (int r = 0; r < n; ++r) {  // faceMaterialValues
+        const Ptr& P = ptr[r];
+        th[r] = 0.5 * (P.th[cL] + P.th[cR]);
+        vf[r] = faceSpecificVolume(P.m[cL], P.sv[cL], P.m[cR], P.sv[cR]);
+      }
       openSolidFaceExchange(st_, d, fi, th);
       // Whether the face exchange leaves the fluids free of the solids here (no solid at the face,
       // or an open face of the solids' face transport, solid_faces.h): their face velocities are
@@ -207,16 +218,13 @@ void IceSolver::computeFaceVelocities() {
       // reflected plateau fell 0.25 % (its surface cells' gas is far below the plateau's
       // pressure, held there by that lock).
       bool freeOfSolids = exchSolids;
-      for (int r = 0; r < nm && freeOfSolids; ++r)
-        if (st_.mat[r].external && th[r] > 0) freeOfSolids = false;
+      for (int r = 0; r < n && freeOfSolids; ++r)
+        if (ptr[r].external && th[r] > 0) freeOfSolids = false;
       // The two-shock Riemann solution's response of the face velocity to the pressure jump,
       // 1 / (W_L + W_R) (times dx: per unit gradient), at faces in compression (0 elsewhere).
       double riemann = 0;
-      if (riemannOn) {
-        const std::int64_t R = mix.box.index(i, j, k);
-        riemann = dx * riemannVelocityResponse(mix, R - sdx, R, d);
-      }
-      for (int r = 0; r < nm; ++r) {
+      if (riemannOn) riemann = dx * riemannVelocityResponse(mix, R - sdx, R, d);
+      for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
         const double mL = P.m[cL], mR = P.m[cR];
         const double msum = mL + mR;
@@ -235,9 +243,9 @@ void IceSolver::computeFaceVelocities() {
         // Its gain in the explicit pressure increment, (open face / theta_r) max(C^2, C / 2) with
         // C the fluid's acoustic Courant number, is at most what dt v_r gives at C = 1 / 2.
         double held = 0;
-        if (freeOfSolids && !st_.mat[r].external) {
+        if (freeOfSolids && !P.external) {
           const double* hs = H.share[static_cast<std::size_t>(r)].data();
-          const std::int64_t hR = H.box.index(i, j, k), hL = hR - hsd;
+          const std::int64_t hL = hR - hsd;
           const double h = std::max(hs[hL], hs[hR]);
           if (h > 0) {
             const double zL = impedance(st_.mat[r], cL), zR = impedance(st_.mat[r], cR);
@@ -249,22 +257,35 @@ void IceSolver::computeFaceVelocities() {
       // The semi-implicit face mobilities (assembleSemiImplicit) solve the same exchange with the
       // face specific volumes as right-hand side: one factorisation for both.
       if (mobility) {
-        double* phi = x + nm;
-        for (int r = 0; r < nm; ++r) phi[r] = vf[r];
-        if (exch) faceExchange(nm, dt, K_.data(), th, vf, x, 2);
-        for (int r = 0; r < nm; ++r) (*mobility)[static_cast<std::size_t>(r)][d].data()[fi] = phi[r];
+        double* phi = x + n;
+        for (int r = 0; r < n; ++r) phi[r] = vf[r];
+        if (exch) faceExchangeFixed<NM>(n, dt, K_.data(), th, vf, x, 2);
+        for (int r = 0; r < n; ++r) (*mobility)[static_cast<std::size_t>(r)][d].data()[fi] = phi[r];
       } else if (exch) {
-        faceExchange(nm, dt, K_.data(), th, vf, x);
+        faceExchangeFixed<NM>(n, dt, K_.data(), th, vf, x, 1);
       }
       const int idx[3] = {i, j, k};
       const bool atLo = inLo && idx[d] == owned_.lo[d], atHi = inHi && idx[d] == owned_.hi[d] + 1;
-      for (int r = 0; r < nm; ++r) {
+      for (int r = 0; r < n; ++r) {
         double u = x[r];
         if (atLo) u = bc_.inflow(2 * d).velocity[d];
         if (atHi) u = bc_.inflow(2 * d + 1).velocity[d];
         ptr[r].uf[fi] = u;
       }
-    });
+    };
+    // The faces in forEach's order, by rows (flat indices along each row).
+    auto sweep = [&]<int NM>() {
+      for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+        for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+          const int i0 = fb.lo[0];
+          std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k);
+          std::int64_t R = riemannOn ? mix.box.index(i0, j, k) : 0, hR = exchSolids ? H.box.index(i0, j, k) : 0;
+          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
+        }
+    };
+    if (nm == 2) sweep.template operator()<2>();
+    else if (nm == 3) sweep.template operator()<3>();
+    else sweep.template operator()<0>();
   }
 }
 
