@@ -45,7 +45,8 @@ void IceSolver::computeSourcesAndLagrangian() {
     if (anyExternal_ || m.conductivity > 0) m.eintStart = m.eint;
     if (m.viscosity > 0 || q1_ > 0 || q2_ > 0) m.velStart = m.vel;  // shock viscosity: advectFluids
   }
-  std::vector<Ptr> ptr(static_cast<std::size_t>(nm));
+  std::vector<Ptr> ptrs(static_cast<std::size_t>(nm));
+  Ptr* const ptr = ptrs.data();
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     const auto u = core::components(m.vel);
@@ -69,16 +70,19 @@ void IceSolver::computeSourcesAndLagrangian() {
     fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
     dxs[d] = mesh_.dx(d);
   }
-  forEach(owned_, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k);
+  // One owned cell (i, j, k): stored index c, fls[d] the index of its low face normal to d. NM > 0:
+  // the number of materials fixed at compile time (the small loops unroll; the same operations in
+  // the same order).
+  auto cell = [&]<int NM>(int i, int j, int k, std::int64_t c, const std::int64_t* fls) {
+    const int n = NM > 0 ? NM : nm;
     double kbar = 0, thetaCav = 0;
-    for (const Ptr& P : ptr) kbar += P.th[c] * P.ka[c];
+    for (int r = 0; r < n; ++r) kbar += ptr[r].th[c] * ptr[r].ka[c];
     // A cavitated liquid (kappa = inf, docs/ice.md "Cavitation") makes kbar infinite: the
     // cavitated liquids take the cell's volume change (shared by their volume fractions), the others none.
     const bool cavity = std::isinf(kbar);
     if (cavity)
-      for (const Ptr& P : ptr)
-        if (std::isinf(P.ka[c])) thetaCav += P.th[c];
+      for (int r = 0; r < n; ++r)
+        if (std::isinf(ptr[r].ka[c])) thetaCav += ptr[r].th[c];
     auto volumeShare = [&](const Ptr& P) {
       if (!cavity) return kbar > 0 ? P.th[c] * P.ka[c] / kbar : 0.0;
       return std::isinf(P.ka[c]) ? P.th[c] / thetaCav : 0.0;
@@ -88,7 +92,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     double gp[3] = {0, 0, 0};
     double dEflux = 0;
     for (int d = 0; d < dim; ++d) {
-      const std::int64_t fl = fbs[d].index(i, j, k), fh = fl + fs[d];
+      const std::int64_t fl = fls[d], fh = fl + fs[d];
       const double pfl = pF[d][fl], pfh = pF[d][fh];
       gp[d] = (pfh - pfl) / dxs[d];
       {
@@ -97,7 +101,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       }
     }
     double dKE = 0, dIE = 0, dWork = 0;
-    for (int r = 0; r < nm; ++r) {
+    for (int r = 0; r < n; ++r) {
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
       const double f = P.th[c] > 0 ? volumeShare(P) / P.th[c] : (kbar > 0 && !cavity ? P.ka[c] / kbar : 0.0);
@@ -137,11 +141,12 @@ void IceSolver::computeSourcesAndLagrangian() {
       // the drag, whose heat is shared the same way: no net energy moves into or out of it.
       double C = 0;
       bool solid = false;
-      for (const Ptr& P : ptr) {
+      for (int r = 0; r < n; ++r) {
+        const Ptr& P = ptr[r];
         C += P.m[c] * P.cv;
         solid = solid || (P.external && P.m[c] > 0);
       }
-      for (int r = 0; r < nm; ++r) {
+      for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
         const double share = (solid ? P.m[c] * P.cv / C : volumeShare(P)) * D;  // [J]
         if (P.external) {
@@ -165,9 +170,25 @@ void IceSolver::computeSourcesAndLagrangian() {
       }
     }
     if (anyGravity_)
-      for (const Ptr& P : ptr)
-        for (int d = 0; d < dim; ++d) P.uL[d][c] += dt * gravity_[d];
-  });
+      for (int r = 0; r < n; ++r)
+        for (int d = 0; d < dim; ++d) ptr[r].uL[d][c] += dt * gravity_[d];
+  };
+  // The owned cells in forEach's order, by rows (flat indices along each row).
+  auto sweep = [&]<int NM>() {
+    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+        const int i0 = owned_.lo[0];
+        std::int64_t c = sb.index(i0, j, k), fls[3] = {0, 0, 0};
+        for (int d = 0; d < dim; ++d) fls[d] = fbs[d].index(i0, j, k);
+        for (int i = i0; i <= owned_.hi[0]; ++i, ++c) {
+          cell.template operator()<NM>(i, j, k, c, fls);
+          for (int d = 0; d < dim; ++d) ++fls[d];
+        }
+      }
+  };
+  if (nm == 2) sweep.template operator()<2>();
+  else if (nm == 3) sweep.template operator()<3>();
+  else sweep.template operator()<0>();
 
   if (anyViscous_ || anyConduction_) {
     for (MaterialState& m : st_.mat) {
