@@ -255,14 +255,17 @@ void IceSolver::advectFluids() {
                   m.external ? nullptr : adv_.mat[r].massFlux[d].data(), m.external};
       }
       const core::Field* solidFaces = st_.solidFaces.on ? &st_.solidFaces.cover[d] : nullptr;
-      forEach(fb, [&](int i, int j, int k) {
-        const std::int64_t fi = fb.index(i, j, k);
-        const std::int64_t cR = sb.index(i, j, k), cL = cR - sd;
+      // The face fi with the stored cell cR on its high side. NM > 0: the number of materials
+      // fixed at compile time (the small loops unroll, no memset of the arrays; the same
+      // operations in the same order).
+      auto face1 = [&]<int NM>(std::int64_t fi, std::int64_t cR) {
+        const int n = NM > 0 ? NM : nm;
+        const std::int64_t cL = cR - sd;
         double th1[kMaxMaterials], th2[kMaxMaterials], fm[kMaxMaterials];
         double s1 = 0, s2 = 0;
-        for (int r = 0; r < nm; ++r) {
+        for (int r = 0; r < n; ++r) {
           const Ptr& P = ptr[r];
-          th1[r] = th2[r] = 0;
+          th1[r] = th2[r] = fm[r] = 0;  // fm is read only where th1 or th2 is set (with it)
           if (P.skip) continue;
           const double uf = P.uf[fi];
           if (uf == 0) continue;
@@ -278,7 +281,7 @@ void IceSolver::advectFluids() {
         // (solid_faces.h), as in the volume fluxes of the pressure.
         const double target = solidFaces != nullptr && s1 > 0 ? 1.0 - solidFaces->data()[fi] : s1;
         const double scale = s2 > 0 ? target / s2 : 0.0;
-        for (int r = 0; r < nm; ++r) {
+        for (int r = 0; r < n; ++r) {
           const Ptr& P = ptr[r];
           if (th1[r] == 0 && th2[r] == 0) {
             if (!P.skip) P.flux[fi] = 0;
@@ -286,7 +289,18 @@ void IceSolver::advectFluids() {
           }
           P.flux[fi] = fm[r] * th2[r] * scale;
         }
-      });
+      };
+      // The faces in forEach's order, by rows (flat indices along each row).
+      auto sweep1 = [&]<int NM>() {
+        for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+          for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+            std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
+            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
+          }
+      };
+      if (nm == 2) sweep1.template operator()<2>();
+      else if (nm == 3) sweep1.template operator()<3>();
+      else sweep1.template operator()<0>();
     }
 
     // Positivity: a donor whose outflows over all its faces would exceed kMaxOutflowFraction of
