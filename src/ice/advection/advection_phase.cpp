@@ -457,8 +457,9 @@ void IceSolver::advectFluids() {
           for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
         }
     };
-    // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k).
-    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+    // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k). Inner: every one of these
+    // faces has owned cells on both sides (the tests below are then known at compile time).
+    auto pass2Faces = [&]<bool Inner>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
       const int lo = owned_.lo[d], hi = owned_.hi[d];
       std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
       // The sums' rows of the cells on the high and the low side (owned rows only are read).
@@ -468,7 +469,7 @@ void IceSolver::advectFluids() {
         if (F == 0) continue;
         const std::int64_t cL = cR - P.sd;
         const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
-        const bool ownL = id > lo, ownR = id <= hi;
+        const bool ownL = Inner || id > lo, ownR = Inner || id <= hi;
         const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
         const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
         const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
@@ -500,6 +501,20 @@ void IceSolver::advectFluids() {
           R[kRemV] += w * (f.v - P.vL[D]);
         }
       }
+    };
+    // The same faces in the same order, the inner ones (owned cells on both sides) apart.
+    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+      if (d == 0) {
+        const int a = std::max(ilo, owned_.lo[0] + 1), b = std::min(ihi, owned_.hi[0]);
+        if (a > b) return pass2Faces.template operator()<false>(P, d, j, k, ilo, ihi);
+        if (ilo < a) pass2Faces.template operator()<false>(P, d, j, k, ilo, a - 1);
+        pass2Faces.template operator()<true>(P, d, j, k, a, b);
+        if (b < ihi) pass2Faces.template operator()<false>(P, d, j, k, b + 1, ihi);
+        return;
+      }
+      const int id = d == 1 ? j : k;
+      if (id > owned_.lo[d] && id <= owned_.hi[d]) pass2Faces.template operator()<true>(P, d, j, k, ilo, ihi);
+      else pass2Faces.template operator()<false>(P, d, j, k, ilo, ihi);
     };
     // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
     // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
