@@ -115,23 +115,55 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
   x.z.resize(n);
   for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
   const core::Box& sb = st.press.box();
-  forEach(box, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k);
-    const auto o = static_cast<std::size_t>(box.index(i, j, k));
+  const int nm = static_cast<int>(st.mat.size());
+  // Per material: mass, velocity, volume fraction, specific volume, compressibility, external.
+  struct Ptr {
+    const double *m, *u[3], *th, *sv, *ka;
+    bool external;
+  };
+  std::vector<Ptr> ptrs(st.mat.size());
+  for (int r = 0; r < nm; ++r) {
+    const MaterialState& m = st.mat[static_cast<std::size_t>(r)];
+    ptrs[static_cast<std::size_t>(r)] = {m.mass.data(), {nullptr, nullptr, nullptr}, m.theta.data(), m.spvol.data(),
+                                         m.kappa.data(), m.external};
+    for (int d = 0; d < dim; ++d) ptrs[static_cast<std::size_t>(r)].u[d] = m.vel.data(d);
+  }
+  const Ptr* const ptr = ptrs.data();
+  double* const xu[3] = {x.u[0].data(), x.u[1].data(), x.u[2].data()};
+  // Stored cell c, o its index in box. NM, DIM > 0: the number of materials and the dimension
+  // fixed at compile time (the small loops unroll; the same operations in the same order).
+  auto cell = [&]<int NM, int DIM>(std::int64_t c, std::size_t o) {
+    const int nmt = NM > 0 ? NM : nm;
+    const int nd = DIM > 0 ? DIM : dim;
     double mass = 0, mu[3] = {0, 0, 0}, dn = 0, kap = 0;
     bool solid = false;
-    for (const MaterialState& m : st.mat) {
-      const double mm = m.mass.data()[c];
+    for (int r = 0; r < nmt; ++r) {
+      const Ptr& m = ptr[r];
+      const double mm = m.m[c];
       mass += mm;
       solid = solid || (m.external && mm > 0);
-      for (int d = 0; d < dim; ++d) mu[d] += mm * m.vel.data(d)[c];
-      const double t = m.theta.data()[c];
-      if (t > 0) dn += t / m.spvol.data()[c], kap += t * m.kappa.data()[c];
+      for (int d = 0; d < nd; ++d) mu[d] += mm * m.u[d][c];
+      const double t = m.th[c];
+      if (t > 0) dn += t / m.sv[c], kap += t * m.ka[c];
     }
     x.rho[o] = dn;
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
-    for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)][o] = mass > 0 ? mu[d] / mass : 0.0;
-  });
+    for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
+  };
+  // The cells in forEach's order, by rows (flat indices along each row; o counts the box's cells).
+  auto sweep = [&]<int NM, int DIM>() {
+    std::size_t o = 0;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+      for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
+        std::int64_t c = sb.index(box.lo[0], j, k);
+        for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+      }
+  };
+  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
+  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
+  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
+  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
+  else sweep.template operator()<0, 0>();
 }
 
 
@@ -305,8 +337,15 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
   const CellMixes& x = mixes ? *mixes : own;
   const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   double rate = 0;
-  forEach(owned, [&](int i, int j, int k) {
-    const std::int64_t c = x.box.index(i, j, k);
+  // The owned cells in forEach's order, by rows (c: the index in the mixtures' box).
+  auto sweep = [&](auto&& f) {
+    for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
+      for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
+        std::int64_t c = x.box.index(owned.lo[0], j, k);
+        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
+      }
+  };
+  sweep([&](int i, int j, int k, std::int64_t c) {
     const auto C = static_cast<std::size_t>(c);
     double s = 0;
     for (int d = 0; d < dim; ++d) {

@@ -87,17 +87,31 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       impedanceScratch_[static_cast<std::size_t>(zb.index(i, j, k))] = impedance(sb.index(i, j, k));
     });
   }
-  forEach(owned_, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k);
+  // Per material: volume fraction, compressibility, mass, velocity.
+  struct Ptr {
+    const double *th, *ka, *m, *u[3];
+  };
+  std::vector<Ptr> ptrs(static_cast<std::size_t>(nm));
+  for (int r = 0; r < nm; ++r) {
+    const MaterialState& m = st_.mat[r];
+    ptrs[r] = {m.theta.data(), m.kappa.data(), m.mass.data(), {nullptr, nullptr, nullptr}};
+    for (int d = 0; d < dim; ++d) ptrs[r].u[d] = m.vel.data(d);
+  }
+  const Ptr* const ptr = ptrs.data();
+  // One owned cell (i, j, k), stored index c. NM, DIM > 0: the number of materials and the mesh's
+  // dimension fixed at compile time (the small loops unroll; the same operations in the same order).
+  auto cell = [&]<int NM, int DIM>(int i, int j, int k, std::int64_t c) {
+    const int nmt = NM > 0 ? NM : nm;
+    const int nd = DIM > 0 ? DIM : dim;
     double kbar = 0, rho = 0;
     double umax[3] = {0, 0, 0};
-    for (int r = 0; r < nm; ++r) {
-      const MaterialState& m = st_.mat[r];
-      const double th = m.theta.data()[c];
-      kbar += th * m.kappa.data()[c];
-      rho += m.mass.data()[c] / V;
+    for (int r = 0; r < nmt; ++r) {
+      const Ptr& m = ptr[r];
+      const double th = m.th[c];
+      kbar += th * m.ka[c];
+      rho += m.m[c] / V;
       if (th > kPresentFraction)
-        for (int d = 0; d < dim; ++d) umax[d] = std::max(umax[d], std::abs(m.vel.data(d)[c]));
+        for (int d = 0; d < nd; ++d) umax[d] = std::max(umax[d], std::abs(m.u[d][c]));
     }
     const double cs = kbar > 0 && rho > 0 ? std::sqrt(1.0 / (rho * kbar)) : 0.0;
     // Semi-implicit: the convective bound must hold for the velocities the step creates, not only
@@ -117,7 +131,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
         }
     }
     double s = 0;
-    for (int d = 0; d < dim; ++d)
+    for (int d = 0; d < nd; ++d)
       s += (semiImplicit_ ? std::max(umax[d], soundFraction_ * cs) : umax[d] + cs) / mesh_.dx(d);
     // The shock viscosity is an explicit diffusion with nu = (q1 c + q2 |du|) dx: stable for
     // dt <= dx / (2 (q1 c + q2 |du|)); added to the rate, so the CFL factor covers it as well.
@@ -137,7 +151,20 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       rate = s;
       rateCell = c;
     }
-  });
+  };
+  // The owned cells in forEach's order, by rows (flat indices along each row).
+  auto sweep = [&]<int NM, int DIM>() {
+    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+        std::int64_t c = sb.index(owned_.lo[0], j, k);
+        for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i, ++c) cell.template operator()<NM, DIM>(i, j, k, c);
+      }
+  };
+  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
+  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
+  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
+  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
+  else sweep.template operator()<0, 0>();
   const double localRate = rate;
   rate = comm_.max(rate);
   double dt = rate > 0 ? cfl_ / rate : dtMax_;
