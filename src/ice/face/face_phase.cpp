@@ -377,13 +377,19 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
   std::vector<const double*> mass;
   for (const MaterialState& m : st.mat) mass.push_back(m.mass.data());
   const double* press = st.press.data();
+  const int nm = static_cast<int>(mass.size());
   for (int d = 0; d < dim; ++d) {
     const core::Box fb = owned.faces(d);
     double* pface = st.pressFace[d].data();
-    forEach(fb, [&](int i, int j, int k) {
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - cellStrides[d];
+    // The face (i, j, k): stored cell cR on its high side, face index fi, cR's index R in the
+    // mixtures' box. NM > 0: the number of materials fixed at compile time (the same operations
+    // in the same order).
+    auto face = [&]<int NM>(int i, int j, int k, std::int64_t cR, std::int64_t fi, std::int64_t R) {
+      const int n = NM > 0 ? NM : nm;
+      const std::int64_t cL = cR - cellStrides[d];
       double rL = 0, rR = 0;
-      for (const double* ms : mass) {
+      for (int r = 0; r < n; ++r) {
+        const double* ms = mass[static_cast<std::size_t>(r)];
         rL += ms[cL];
         rR += ms[cR];
       }
@@ -394,12 +400,21 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
         l[d] -= 1;
         pf += shockViscosity(st, l, i, j, k, d, rL, rR, q1, q2);
       }
-      if (riemann && rL > 0 && rR > 0) {
-        const std::int64_t R = x.box.index(i, j, k);
-        pf += riemannDissipation(x, R - strides[d], R, d);
-      }
-      pface[fb.index(i, j, k)] = pf;
-    });
+      if (riemann && rL > 0 && rR > 0) pf += riemannDissipation(x, R - strides[d], R, d);
+      pface[fi] = pf;
+    };
+    // The faces in forEach's order, by rows (flat indices along each row).
+    auto sweep = [&]<int NM>() {
+      for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+        for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+          const int i0 = fb.lo[0];
+          std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k), R = riemann ? x.box.index(i0, j, k) : 0;
+          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
+        }
+    };
+    if (nm == 2) sweep.template operator()<2>();
+    else if (nm == 3) sweep.template operator()<3>();
+    else sweep.template operator()<0>();
   }
 }
 

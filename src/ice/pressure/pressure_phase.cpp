@@ -216,12 +216,15 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
     double* U = st.volFlux[d].data();
     for (std::size_t r = 0; r < nm; ++r) uf[r] = st.mat[r].velFace[d].data(), th[r] = st.mat[r].theta.data();
     const SolidFaces& sf = st.solidFaces;
-    forEach(fb, [&](int i, int j, int k) {
-      const std::int64_t cR = sb.index(i, j, k), cL = cR - sd, fi = fb.index(i, j, k);
+    // The face fi with stored cell cR on its high side. NM > 0: the number of materials fixed at
+    // compile time (the same operations in the same order).
+    auto face = [&]<int NM>(std::int64_t cR, std::int64_t fi) {
+      const std::size_t n = NM > 0 ? NM : nm;
+      const std::int64_t cL = cR - sd;
       double f = 0;
       if (sf.on) {  // the solids' own transport, the fluids through the open part of the face
         double open = 0, S = 0;
-        for (std::size_t r = 0; r < nm; ++r) {
+        for (std::size_t r = 0; r < n; ++r) {
           if (st.mat[r].external) continue;
           const double u = uf[r][fi], t = th[r][u > 0 ? cL : cR];
           open += u * t;
@@ -229,13 +232,24 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
         }
         f = sf.flux[d].data()[fi] + (S > 0 ? (1.0 - sf.cover[d].data()[fi]) * open / S : 0.0);
       } else {
-        for (std::size_t r = 0; r < nm; ++r) {
+        for (std::size_t r = 0; r < n; ++r) {
           const double u = uf[r][fi];
           f += u * th[r][u > 0 ? cL : cR];
         }
       }
       U[fi] = f;
-    });
+    };
+    // The faces in forEach's order, by rows (flat indices along each row).
+    auto sweep = [&]<int NM>() {
+      for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+        for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+          std::int64_t cR = sb.index(fb.lo[0], j, k), fi = fb.index(fb.lo[0], j, k);
+          for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++cR, ++fi) face.template operator()<NM>(cR, fi);
+        }
+    };
+    if (nm == 2) sweep.template operator()<2>();
+    else if (nm == 3) sweep.template operator()<3>();
+    else sweep.template operator()<0>();
   }
   // Their divergence: the face above cell (i, j, k) in direction d is its face index plus the
   // face box's stride in d.
@@ -248,14 +262,22 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
     fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
   }
   double* divU = st.divU.data();
-  forEach(owned, [&](int i, int j, int k) {
-    double div = 0;
-    for (int d = 0; d < dim; ++d) {
-      const std::int64_t f = fbs[d].index(i, j, k);
-      div += (U[d][f + fs[d]] - U[d][f]) / mesh.dx(d);
+  double dxs[3] = {1, 1, 1};
+  for (int d = 0; d < dim; ++d) dxs[d] = mesh.dx(d);
+  // By rows (flat indices: c the stored cell, f[d] its low face normal to d).
+  for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
+    for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
+      std::int64_t c = sb.index(owned.lo[0], j, k), f[3] = {0, 0, 0};
+      for (int d = 0; d < dim; ++d) f[d] = fbs[d].index(owned.lo[0], j, k);
+      for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) {
+        double div = 0;
+        for (int d = 0; d < dim; ++d) {
+          div += (U[d][f[d] + fs[d]] - U[d][f[d]]) / dxs[d];
+          ++f[d];
+        }
+        divU[c] = div;
+      }
     }
-    divU[sb.index(i, j, k)] = div;
-  });
 }
 
 void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) {
@@ -267,10 +289,12 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) 
   double *dpp = st.dp.data(), *p = st.press.data();
   bool anyCav = false;
   for (const MaterialState& m : st.mat) anyCav = anyCav || (!m.external && m.eos->cavitates());
-  forEach(owned, [&](int i, int j, int k) {
-    const std::int64_t c = sb.index(i, j, k);
+  // Stored cell c. NM > 0: the number of materials fixed at compile time (the same operations in
+  // the same order).
+  auto cell = [&]<int NM>(std::int64_t c) {
+    const std::size_t n = NM > 0 ? NM : nm;
     double kbar = 0;
-    for (std::size_t r = 0; r < nm; ++r) kbar += th[r][c] * ka[r][c];
+    for (std::size_t r = 0; r < n; ++r) kbar += th[r][c] * ka[r][c];
     double dp = kbar > 0 ? -dt * divU[c] / kbar : 0.0;
     // A cavitating liquid's cut-off bounds the increment too (docs/ice.md "Cavitation"): a cell
     // that would expand through it in this step cavitates at it (its volume change beyond is the
@@ -284,7 +308,18 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) 
     }
     dpp[c] = dp;
     p[c] = pe[c] + dp;
-  });
+  };
+  // The owned cells in forEach's order, by rows (flat indices along each row).
+  auto sweep = [&]<int NM>() {
+    for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
+      for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
+        std::int64_t c = sb.index(owned.lo[0], j, k);
+        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) cell.template operator()<NM>(c);
+      }
+  };
+  if (nm == 2) sweep.template operator()<2>();
+  else if (nm == 3) sweep.template operator()<3>();
+  else sweep.template operator()<0>();
 }
 
 void IceSolver::computePressureIncrement() {
