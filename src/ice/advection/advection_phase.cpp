@@ -384,10 +384,13 @@ void IceSolver::advectFluids() {
     struct FaceState {
       double u[3], v, e;
     };
-    auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
-                         const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
+    // DIM > 0: the mesh's dimension fixed at compile time.
+    auto faceStateDim = [&]<int DIM>(const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR,
+                                     const double* const* u, const double* vL, const double* eL, const double* th,
+                                     const double* isG, const double* isP) {
+      const int nd = DIM > 0 ? DIM : dim;
       FaceState f;
-      for (int q = 0; q < dim; ++q) f.u[q] = face(u[q]);
+      for (int q = 0; q < nd; ++q) f.u[q] = face(u[q]);
       f.v = face(vL);
       f.e = face(eL);
       if constexpr (Second) {
@@ -397,6 +400,10 @@ void IceSolver::advectFluids() {
         (void)cR, (void)th, (void)isG, (void)isP;
       }
       return f;
+    };
+    auto faceState = [&](const FaceValue<Second, L>& face, std::int64_t cL, std::int64_t cR, const double* const* u,
+                         const double* vL, const double* eL, const double* th, const double* isG, const double* isP) {
+      return faceStateDim.template operator()<0>(face, cL, cR, u, vL, eL, th, isG, isP);
     };
 
     // The pointers the flux passes (pass 2 and the blend's) read and write for one fluid at the
@@ -458,8 +465,12 @@ void IceSolver::advectFluids() {
         }
     };
     // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k). Inner: every one of these
-    // faces has owned cells on both sides (the tests below are then known at compile time).
-    auto pass2Faces = [&]<bool Inner>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+    // faces has owned cells on both sides (the tests below are then known at compile time). DIM:
+    // the mesh's dimension fixed at compile time (the loops over components unroll).
+    auto pass2Faces = [&]<bool Inner, int DIM>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+      static_assert(DIM > 0);
+      constexpr int tp = DIM - 1;  // top
+      auto col = [&](int ii) -> std::int64_t { return (tp == 0 ? (ii & 1) : ii - owned_.lo[0]) * kRemSums; };
       const int lo = owned_.lo[d], hi = owned_.hi[d];
       std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
       // The sums' rows of the cells on the high and the low side (owned rows only are read).
@@ -472,14 +483,14 @@ void IceSolver::advectFluids() {
         const bool ownL = Inner || id > lo, ownR = Inner || id <= hi;
         const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
         const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
-        const FaceState f = faceState(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
+        const FaceState f = faceStateDim.template operator()<DIM>(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
         auto apply = [&](double* acc, double flux) {
           const double v = lam * flux;
           if (ownL) acc[cL] -= v;
           if (ownR) acc[cR] += v;
         };
         double ke = 0;
-        for (int q = 0; q < dim; ++q) {
+        for (int q = 0; q < DIM; ++q) {
           apply(P.a[kMomX + q], F * f.u[q]);
           ke += f.u[q] * f.u[q];
         }
@@ -489,11 +500,11 @@ void IceSolver::advectFluids() {
         apply(P.a[kEint], F * f.e);
         const std::int64_t D = face.D;
         if (D == cL ? ownL : ownR) {
-          double* R = rem + (D == cL ? rowL + remCol(i - (d == 0)) : rowR + remCol(i));
+          double* R = rem + (D == cL ? rowL + col(i - (d == 0)) : rowR + col(i));
           const double w = lam * std::abs(F);
           R[kRemMass] -= w;
           R[kRemE] += w * (f.e - P.eL[D]);
-          for (int q = 0; q < dim; ++q) {  // beyond dim the face velocity is the donor's
+          for (int q = 0; q < DIM; ++q) {  // beyond dim the face velocity is the donor's
             const double du = f.u[q] - P.u[q][D];
             R[kRemU2] += w * du * du;
             R[kRemUx + q] += w * du;
@@ -503,18 +514,23 @@ void IceSolver::advectFluids() {
       }
     };
     // The same faces in the same order, the inner ones (owned cells on both sides) apart.
-    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+    auto pass2RowDim = [&]<int DIM>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
       if (d == 0) {
         const int a = std::max(ilo, owned_.lo[0] + 1), b = std::min(ihi, owned_.hi[0]);
-        if (a > b) return pass2Faces.template operator()<false>(P, d, j, k, ilo, ihi);
-        if (ilo < a) pass2Faces.template operator()<false>(P, d, j, k, ilo, a - 1);
-        pass2Faces.template operator()<true>(P, d, j, k, a, b);
-        if (b < ihi) pass2Faces.template operator()<false>(P, d, j, k, b + 1, ihi);
+        if (a > b) return pass2Faces.template operator()<false, DIM>(P, d, j, k, ilo, ihi);
+        if (ilo < a) pass2Faces.template operator()<false, DIM>(P, d, j, k, ilo, a - 1);
+        pass2Faces.template operator()<true, DIM>(P, d, j, k, a, b);
+        if (b < ihi) pass2Faces.template operator()<false, DIM>(P, d, j, k, b + 1, ihi);
         return;
       }
       const int id = d == 1 ? j : k;
-      if (id > owned_.lo[d] && id <= owned_.hi[d]) pass2Faces.template operator()<true>(P, d, j, k, ilo, ihi);
-      else pass2Faces.template operator()<false>(P, d, j, k, ilo, ihi);
+      if (id > owned_.lo[d] && id <= owned_.hi[d]) pass2Faces.template operator()<true, DIM>(P, d, j, k, ilo, ihi);
+      else pass2Faces.template operator()<false, DIM>(P, d, j, k, ilo, ihi);
+    };
+    auto pass2Row = [&](const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
+      if (dim == 1) pass2RowDim.template operator()<1>(P, d, j, k, ilo, ihi);
+      else if (dim == 2) pass2RowDim.template operator()<2>(P, d, j, k, ilo, ihi);
+      else pass2RowDim.template operator()<3>(P, d, j, k, ilo, ihi);
     };
     // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
     // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
