@@ -182,7 +182,9 @@ void IceSolver::advectFluids() {
   // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
   // velocity, specific volume and internal energy (its velocity and energy, the face values'
   // sources, held the Lagrangian values until here).
-  auto convert = [&](int r) {
+  // DIM > 0: the mesh's dimension fixed at compile time (the same operations in the same order).
+  auto convertDim = [&]<int DIM>(int r) {
+    const int nd = DIM > 0 ? DIM : dim;
     MaterialState& m = st_.mat[r];
     double* a[kNumAcc];
     accumulators(m, a);
@@ -206,7 +208,7 @@ void IceSolver::advectFluids() {
       }
       const double inv = 1.0 / mass;
       double ke = 0;
-      for (int d = 0; d < dim; ++d) {
+      for (int d = 0; d < nd; ++d) {
         double ud = a[kMomX + d][c] * inv;
         if (std::abs(ud) < kTinyVelocity) ud = 0.0;  // no denormal tails ahead of waves
         u[d][c] = ud;
@@ -233,6 +235,11 @@ void IceSolver::advectFluids() {
       }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
     }
+  };
+  auto convert = [&](int r) {
+    if (dim == 2) convertDim.template operator()<2>(r);
+    else if (dim == 3) convertDim.template operator()<3>(r);
+    else convertDim.template operator()<0>(r);
   };
   // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
   auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
@@ -347,7 +354,8 @@ void IceSolver::advectFluids() {
 
     // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
     // m (e + |u|^2 / 2), m v (in the specific volume, which nothing below reads), m e.
-    auto conserved = [&](int r) {
+    auto conservedDim = [&]<int DIM>(int r) {
+      const int nd = DIM > 0 ? DIM : dim;
       MaterialState& m = st_.mat[r];
       double* a[kNumAcc];
       accumulators(m, a);
@@ -356,7 +364,7 @@ void IceSolver::advectFluids() {
       for (const std::int64_t c : ownedCells_) {
         const double mass = a[kMass][c];
         double ke = 0;
-        for (int d = 0; d < dim; ++d) {
+        for (int d = 0; d < nd; ++d) {
           a[kMomX + d][c] = mass * u[d][c];
           ke += u[d][c] * u[d][c];
         }
@@ -364,6 +372,11 @@ void IceSolver::advectFluids() {
         a[kVolume][c] = mass * v[c];
         a[kEint][c] = mass * e[c];
       }
+    };
+    auto conserved = [&](int r) {
+      if (dim == 2) conservedDim.template operator()<2>(r);
+      else if (dim == 3) conservedDim.template operator()<3>(r);
+      else conservedDim.template operator()<0>(r);
     };
 
     // The isentrope fits of the entropy-bounded face state (second order; first order takes the
@@ -461,7 +474,12 @@ void IceSolver::advectFluids() {
         for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
           double* R = rem + remRow(j, k);
           const std::int64_t c0 = sb.index(b.lo[0], j, k);
-          for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
+          if (top == 0) {
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
+          } else {  // remCol(i) = (i - lo) kRemSums
+            double* Ri = R + remCol(b.lo[0]);
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i, Ri += kRemSums) f(c0 + (i - b.lo[0]), Ri);
+          }
         }
     };
     // Pass 2 over the faces normal to d from (ilo, j, k) to (ihi, j, k). Inner: every one of these
