@@ -387,9 +387,15 @@ void IceSolver::advectFluids() {
     // (docs/ice.md "The full sweep").
     const bool entropyBound = Second && riemannFacePressureOn();
     // One fluid's fits at a time (the passes below take the fluids one after the other).
+    // The fits are read only at faces between two cells the fluid fills alone (faceState): where
+    // it fills none (every cell mixed), they are not made.
     auto fitIsentropes = [&](int r) {
       const MaterialState& m = st_.mat[r];
-      if (entropyBound) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
+      if (!entropyBound) return;
+      const double* th = m.theta.data();
+      bool alone = false;
+      for (std::size_t c = 0; c < npts && !alone; ++c) alone = singleFluid(th[c]);
+      if (alone) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
     };
 
     // The face values of one fluid at one face: velocity (the mesh's dimension of components),
