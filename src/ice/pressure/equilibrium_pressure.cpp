@@ -114,18 +114,26 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       }
     }
     all_ = active_;
+    // Each active cell's fluid mass, once (the same sum for every material below).
+    fluidMass_.resize(na);
+    for (std::size_t a = 0; a < na; ++a) {
+      const std::int64_t c = active_[a];
+      double mf = 0;
+      for (std::size_t s = 0; s < nm; ++s)
+        if (fluid_[s]) mf += rho[s][c];
+      fluidMass_[a] = mf;
+    }
     for (std::size_t r = 0; r < nm; ++r) {
       double* ph = pHold_[r].data();
       double* rh = rhoHold_[r].data();
       for (const std::int64_t c : active_) ph[c - c0_] = -inf;
       if (!fluid_[r]) continue;
       const double* vc = (*carriedVolume)[r];
-      for (const std::int64_t c : active_) {
+      for (std::size_t a = 0; a < na; ++a) {
+        const std::int64_t c = active_[a];
         const double m = rho[r][c];
         if (!(m > 0)) continue;
-        double mf = 0;
-        for (std::size_t s = 0; s < nm; ++s)
-          if (fluid_[s]) mf += rho[s][c];
+        const double mf = fluidMass_[a];
         if (!(m < traceY_ * mf) || !(vc[c] > 0) || !std::isfinite(vc[c])) continue;
         const double rc = 1.0 / vc[c];
         double po, pf;

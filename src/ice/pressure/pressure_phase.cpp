@@ -44,16 +44,26 @@ void IceSolver::computeEquilibriumPressure() {
   if (const double Y = equil_->traceMassFraction(); Y > 0 && nm > 1) {
     std::vector<std::int64_t> tc;
     std::vector<double> te, tf;
+    // Each owned cell's fluid mass, once (the same sum for every fluid below; the loop changes
+    // energies only).
+    std::vector<double>& fluidMass = eqFluidMass_;
+    fluidMass.resize(ownedCells_.size());
+    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+      const std::int64_t c = ownedCells_[a];
+      double mf = 0;
+      for (const MaterialState& s : st_.mat)
+        if (!s.external) mf += s.mass.data()[c];
+      fluidMass[a] = mf;
+    }
     for (MaterialState& m : st_.mat) {
       if (m.external) continue;
       tc.clear();
       te.clear();
-      for (const std::int64_t c : ownedCells_) {
+      for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
+        const std::int64_t c = ownedCells_[a];
         const double mr = m.mass.data()[c];
         if (!(mr > 0)) continue;
-        double mf = 0;
-        for (const MaterialState& s : st_.mat)
-          if (!s.external) mf += s.mass.data()[c];
+        const double mf = fluidMass[a];
         if (mr < Y * mf) tc.push_back(c), te.push_back(m.eint.data()[c]);
       }
       tf.resize(tc.size());
@@ -160,7 +170,10 @@ void IceSolver::reportEquilibriumFailures(const std::vector<EquilibriumFailure>&
 void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>>& held,
                                   const std::vector<std::pair<int, std::int64_t>>& cavitated) {
   const int nm = numMaterials();
-  std::vector<double> ra, ea, c2;
+  // Scratch kept from step to step (each entry is written before it is read).
+  std::vector<double>& ra = eqRho_;
+  std::vector<double>& ea = eqE_;
+  std::vector<double>& c2 = eqC2_;
   for (MaterialState& m : st_.mat) {
     double* th = m.theta.data();
     double* sv = m.spvol.data();
