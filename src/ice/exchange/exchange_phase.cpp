@@ -50,7 +50,7 @@ void IceSolver::exchange() {
   // One cell (stored index c, owned index o). NM, DIM > 0: the number of materials and the mesh's
   // dimension fixed at compile time (the small loops unroll; the same operations in the same
   // order as with the run-time counts, 0).
-  auto cell = [&]<int NM, int DIM>(std::int64_t c, std::int64_t o) {
+  auto cell = [&]<int NM, int DIM>(std::int64_t c, std::int64_t o) __attribute__((always_inline)) {
     const int n = NM > 0 ? NM : nm;
     const int nd = DIM > 0 ? DIM : dim;
     double s[kMaxMaterials], w[kMaxMaterials * kMaxMaterials], x[3 * kMaxMaterials], x0[3 * kMaxMaterials];

@@ -231,7 +231,8 @@ void IceSolver::computeFaceVelocities() {
     // The face (i, j, k): stored cell cR = cL + sd on its high side, face index fi, cR's index R in
     // the cell mixtures' box and hR in the held shares'. NM > 0: the number of materials fixed at
     // compile time (the small loops unroll; the same operations in the same order).
-    auto face = [&]<int NM>(int i, int j, int k, std::int64_t cR, std::int64_t fi, std::int64_t R, std::int64_t hR) {
+    auto face = [&]<int NM>(int i, int j, int k, std::int64_t cR, std::int64_t fi, std::int64_t R, std::int64_t hR)
+                    __attribute__((always_inline)) {  // inlined into the row loop (a call per face)
       const int n = NM > 0 ? NM : nm;
       const std::int64_t cL = cR - sd;
       const double dpdx = (p[cR] - p[cL]) / dx;
@@ -312,7 +313,8 @@ void IceSolver::computeFaceVelocities() {
           const int i0 = fb.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k);
           std::int64_t R = riemannOn ? mix.box.index(i0, j, k) : 0, hR = exchSolids ? H.box.index(i0, j, k) : 0;
-          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
+          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR)
+            face.template operator()<NM>(i, j, k, cR, fi, R, hR);
         }
     };
     if (nm == 2) sweep.template operator()<2>();
