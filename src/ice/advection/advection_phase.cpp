@@ -47,7 +47,8 @@ enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRem
 // between two isentropes), and the internal energy of a sum of parts is at least the sum of
 // theirs (|P|^2 / 2m is convex and of degree 1), so the cell's e and v after advection are
 // positive by construction, whatever the face values.
-inline double positivityBlend(const double* R, double eThermal, double vD) {
+// Inlined: one per cell.
+[[gnu::always_inline]] inline double positivityBlend(const double* R, double eThermal, double vD) {
   const double mr = R[kRemMass];
   if (!(mr > 0)) return 1.0;
   double b = 1.0;
@@ -78,7 +79,8 @@ struct FaceValue {
   double w;
   FaceValue(Recon<Second, L>, double uf, std::int64_t cL, std::int64_t sd_, double dt, double dx)
       : D(uf > 0 ? cL : cL + sd_), sd(sd_), w(0.5 * (uf > 0 ? 1.0 : -1.0) * (1.0 - std::abs(uf) * dt / dx)) {}
-  double operator()(const double* f) const {
+  // Inlined: several per face.
+  [[gnu::always_inline]] double operator()(const double* f) const {
     const double q0 = f[D];
     if constexpr (!Second) return q0;
     else return q0 + w * limitedSlope<L>(q0 - f[D - sd], f[D + sd] - q0);
