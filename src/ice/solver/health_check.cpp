@@ -72,7 +72,7 @@ std::string cellViolationOnly(const IceSolver& s, int i, int j, int k, std::int6
 // The same checks as cellViolation over a row of n cells from stored index c0 (x fastest,
 // contiguous), without strings or early exits (the fast pass). `sum`: scratch of n entries.
 bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<double>& sum) {
-  bool ok = true;
+  int ok = 1;  // an int, not a bool: the loops' and-reductions vectorise
   const double* p = st.press.data() + c0;
   for (int a = 0; a < n; ++a) ok &= std::isfinite(p[a]);
   sum.assign(static_cast<std::size_t>(n), 0.0);
@@ -95,16 +95,24 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
     // the others skip its virtual call per cell.
     const bool cold = m.eos->coldEnergy(1.0) != 0.0;
     const double kaCav = m.eos->cavitates() ? std::numeric_limits<double>::infinity() : 0.0;  // cavitated: kappa = inf
-    for (int a = 0; a < n; ++a) {
-      const double mass = ms[a], e = en[a], v = sv[a];
-      ok &= std::isfinite(mass) & (mass >= 0) & std::isfinite(e) & std::isfinite(v) & (!(mass > 0) | (v > 0));
-      const double eT = cold ? e - m.eos->coldEnergy(1.0 / v) : e;
-      const bool present = (th[a] > kPresentFraction) & (mass > 0);
-      ok &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | (ka[a] == kaCav) | ((ka[a] > 0) & (v < c2max * ka[a]))));
-    }
+    // Cold: the EOS has a cold energy (a virtual call per cell); without it (no call) the loop vectorises.
+    auto cells = [&]<bool Cold>() {
+      int good = 1;
+      for (int a = 0; a < n; ++a) {
+        const double mass = ms[a], e = en[a], v = sv[a];
+        good &= std::isfinite(mass) & (mass >= 0) & std::isfinite(e) & std::isfinite(v) & (!(mass > 0) | (v > 0));
+        double eT = e;
+        if constexpr (Cold) eT = e - m.eos->coldEnergy(1.0 / v);
+        const bool present = (th[a] > kPresentFraction) & (mass > 0);
+        good &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | (ka[a] == kaCav) | ((ka[a] > 0) & (v < c2max * ka[a]))));
+      }
+      ok &= good != 0;
+    };
+    if (cold) cells.template operator()<true>();
+    else cells.template operator()<false>();
   }
   for (int a = 0; a < n; ++a) ok &= std::abs(sum[static_cast<std::size_t>(a)] - 1.0) <= kFractionSumTolerance;
-  return ok;
+  return ok != 0;
 }
 }  // namespace
 
