@@ -6,7 +6,9 @@
 /// raw pointers: no virtual calls, no allocations. Fields hold three components whatever the
 /// dimension; only the first Dim are touched.
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include "mpm/grid/grid.h"
@@ -85,10 +87,13 @@ struct Stencil {
     }
   }
 
-  /// Calls f(node offset, weight, grad x, grad y, grad z) for every stencil node.
+  /// Calls f(node offset, weight, grad x, grad y, grad z) for every stencil node; returns the
+  /// offset of the first node.
   template <class F>
-  inline void forNodes(const GridGeom& g, F&& f) const {
-    forStencilNodes<N, Dim>(g.index(base[0], base[1], base[2]), g, w, dw, f);
+  inline std::int64_t forNodes(const GridGeom& g, F&& f) const {
+    const std::int64_t o0 = g.index(base[0], base[1], base[2]);
+    forStencilNodes<N, Dim>(o0, g, w, dw, f);
+    return o0;
   }
 
   /// Stores this stencil in a cache record (StencilCache layout).
@@ -119,9 +124,10 @@ struct StencilCache {
   std::int64_t* offset;
   double* rec;
 
-  /// Calls f(node offset, weight, grad x, grad y, grad z) for every node of particle i's stencil.
+  /// Calls f(node offset, weight, grad x, grad y, grad z) for every node of particle i's stencil;
+  /// returns the offset of its first node.
   template <class F>
-  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+  inline std::int64_t forNodes(std::size_t i, const GridGeom& g, F&& f) const {
     const double* r = rec + i * kRecord;
     double w[3][N], dw[3][N];
     if constexpr (kCompactRecord<Shape>) {
@@ -139,6 +145,7 @@ struct StencilCache {
         }
     }
     forStencilNodes<N, Dim>(offset[i], g, w, dw, f);
+    return offset[i];
   }
 };
 
@@ -149,25 +156,27 @@ struct StencilCache {
 /// (2D linear 6.53e8; as a member 6.73e8: the node stores of f no longer force its reloads).
 template <class Shape, int Dim>
 struct EvaluatedStencils {
+  static constexpr int N = Shape::kNodes;
   const ParticleSet& p;
   mutable Stencil<Shape, Dim> s;
   template <class F>
-  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+  inline std::int64_t forNodes(std::size_t i, const GridGeom& g, F&& f) const {
     s.compute(p, i, g);
-    s.forNodes(g, f);
+    return s.forNodes(g, f);
   }
 };
 /// Evaluated and stored in a StencilCache for the passes after it (the step's particle-to-grid).
 template <class Shape, int Dim>
 struct StoredStencils {
+  static constexpr int N = Shape::kNodes;
   const ParticleSet& p;
   StencilCache<Shape, Dim> cache;
   template <class F>
-  inline void forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+  inline std::int64_t forNodes(std::size_t i, const GridGeom& g, F&& f) const {
     Stencil<Shape, Dim> s;
     s.compute(p, i, g);
     s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
-    s.forNodes(g, f);
+    return s.forNodes(g, f);
   }
 };
 
@@ -357,6 +366,219 @@ void gridToParticles(const Src& src, ParticleSet& p, std::size_t begin, std::siz
     if constexpr (kGradient)
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) p.L[3 * a + b][i] = L[a][b];
+  }
+}
+
+// ---- Node records: the 2D / 3D scatter and gather on interleaved node data ---------------------
+//
+// The grid keeps each node field as its own array (core::Field), so a scalar scatter reads and
+// writes five arrays per 2D node (mass, momentum, force) and seven per 3D node, one double each.
+// The record kernels below keep a node's sums side by side in one 64-byte record instead and
+// update them with vector operations (GCC vector extensions: AVX2 registers where the build has
+// them, SSE2 pairs on the baseline): the lanes are the node fields, so each lane gets the very
+// operation of the scalar kernel (the same products, sums and particle order) and the results
+// keep their bits. No multiply-add is contracted (MPMICE_SIMD builds with -mno-fma).
+// The records are unpacked into the grid's fields after the pass (unpackScatter); the gather reads
+// records packed from the fields before it (packGather). Both cover only the nodes the particles'
+// stencils reach (NodeRange), so the records' memory is touched where the particles are.
+
+using v2d = double __attribute__((vector_size(16)));
+using v4d = double __attribute__((vector_size(32)));
+
+/// Doubles per node record (64 bytes).
+inline constexpr int kRecordDoubles = 8;
+
+template <class V>
+inline V loadVec(const double* a) {
+  V v;
+  std::memcpy(&v, a, sizeof(V));
+  return v;
+}
+template <class V>
+inline void storeVec(double* a, const V& v) {
+  std::memcpy(a, &v, sizeof(V));
+}
+
+/// The node offsets the particles' stencils reach: [lo, hi) (empty when lo >= hi).
+struct NodeRange {
+  std::int64_t lo = 0, hi = 0;
+};
+
+/// Offset of a stencil's last node from its first.
+template <int N, int Dim>
+inline std::int64_t stencilExtent(const GridGeom& g) {
+  return (N - 1) + (Dim >= 2 ? (N - 1) * g.sy : 0) + (Dim == 3 ? (N - 1) * g.sz : 0);
+}
+
+/// One particle's contributions as vectors over the node fields of a scatter record
+/// [mass, p_x, p_y, p_z | f_x, f_y, f_z, 0] (2D: the z lanes are 0 and stay 0):
+///   record[0:4] += (m, m v_x, m v_y, m v_z) w
+///   record[4:8] += b w - ((c_x gx + c_y gy) + c_z gz),  c_k = (V sigma_xk, V sigma_yk, V sigma_zk, 0)
+/// lane by lane the expressions of particlesToGrid and ParticleForce::scatter.
+template <int Dim, bool kForces>
+struct RecordScatter {
+  v4d mv{};       // (m, m v_x, m v_y, m v_z)
+  v4d b{};        // (b_x, b_y, b_z, 0)
+  v4d c[3] = {};  // columns of V sigma (Dim of them)
+  RecordScatter(const ParticleSet& p, std::size_t i, const double gravity[3], bool loads) {
+    const double m = p.mass[i];
+    mv[0] = m;
+    for (int d = 0; d < Dim; ++d) mv[1 + d] = m * p.v[d][i];
+    if constexpr (kForces) {
+      const ParticleForce<Dim> pf(p, i, gravity, loads);
+      for (int d = 0; d < Dim; ++d) b[d] = pf.b[d];
+      // c[k][a] = (V sigma)_{ak}: the symmetric stress's column k.
+      c[0][0] = pf.s[kXX];
+      c[0][1] = pf.s[kXY];
+      c[1][0] = pf.s[kXY];
+      c[1][1] = pf.s[kYY];
+      if constexpr (Dim == 3) {
+        c[0][2] = pf.s[kXZ];
+        c[1][2] = pf.s[kYZ];
+        c[2][0] = pf.s[kXZ];
+        c[2][1] = pf.s[kYZ];
+        c[2][2] = pf.s[kZZ];
+      }
+    }
+  }
+  inline void operator()(double* rec, std::int64_t n, double w, double gx, double gy, double gz) const {
+    double* r = rec + kRecordDoubles * n;
+    const v4d wv = {w, w, w, w};
+    storeVec(r, loadVec<v4d>(r) + mv * wv);
+    if constexpr (kForces) {
+      if constexpr (Dim == 2) {
+        // Two lanes: the 2D force has no z component.
+        const v2d w2 = {w, w}, gx2 = {gx, gx}, gy2 = {gy, gy};
+        const v2d b2 = {b[0], b[1]}, c0 = {c[0][0], c[0][1]}, c1 = {c[1][0], c[1][1]};
+        storeVec(r + 4, loadVec<v2d>(r + 4) + (b2 * w2 - (c0 * gx2 + c1 * gy2)));
+      } else {
+        const v4d gxv = {gx, gx, gx, gx}, gyv = {gy, gy, gy, gy}, gzv = {gz, gz, gz, gz};
+        storeVec(r + 4, loadVec<v4d>(r + 4) + (b * wv - ((c[0] * gxv + c[1] * gyv) + c[2] * gzv)));
+      }
+    }
+  }
+};
+
+/// particlesToGrid (kForces false) or particlesToGridWithForces (true) into scatter records
+/// (RecordScatter) for 2D and 3D; returns the range of nodes reached (unpackScatter's).
+template <int Dim, bool kForces, class Src>
+NodeRange scatterToRecords(const Src& src, const ParticleSet& p, std::size_t begin, std::size_t end,
+                           const GridGeom& g, double* rec, const double gravity[3], bool loads,
+                           ParticleSums* sums = nullptr) {
+  static_assert(Dim == 2 || Dim == 3);
+  double ke = sums ? sums->kinetic : 0.0, wk = sums ? sums->work : 0.0;  // kept in registers
+  std::int64_t lo = INT64_MAX, hi = INT64_MIN;
+  for (std::size_t i = begin; i < end; ++i) {
+    if (sums) {
+      ke += ParticleSums::kineticOf(p, i);
+      wk += p.work[i];
+    }
+    const RecordScatter<Dim, kForces> rs(p, i, gravity, loads);
+    const std::int64_t o0 = src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      rs(rec, n, w, gx, gy, gz);
+    });
+    lo = std::min(lo, o0);
+    hi = std::max(hi, o0);
+  }
+  if (sums) {
+    sums->kinetic = ke;
+    sums->work = wk;
+  }
+  if (begin >= end) return {};
+  return {lo, hi + stencilExtent<Src::N, Dim>(g) + 1};
+}
+
+/// Adds the scatter records of `range` to the node fields (mass, momentum and, kForces, force) and
+/// zeroes them for the next scatter. The fields are zero before (beginStep, projectToGrid), so each
+/// node gets the record's sum, the scalar kernel's bits.
+template <int Dim, bool kForces>
+void unpackScatter(double* rec, NodeRange range, double* mass, double* const mom[3], double* const force[3]) {
+  for (std::int64_t n = range.lo; n < range.hi; ++n) {
+    double* r = rec + kRecordDoubles * n;
+    mass[n] += r[0];
+    for (int d = 0; d < Dim; ++d) mom[d][n] += r[1 + d];
+    if constexpr (kForces)
+      for (int d = 0; d < Dim; ++d) force[d][n] += r[4 + d];
+    storeVec(r, v4d{});
+    storeVec(r + 4, v4d{});
+  }
+}
+
+/// Gather records: per node up to three slots of Dim values (2D: 2 doubles a slot; 3D: 4, the
+/// last 0), in this order: the velocity of the update and move (kVelocity or kMove), the old
+/// velocity of the FLIP increment (kVelocity) and the velocity of the gradient (kGradient, unless
+/// kGradFromFirst: the first slot's). Packed over `range` by packGather, read by gridToRecords.
+template <int Dim>
+inline constexpr int kSlotDoubles = Dim == 2 ? 2 : 4;
+template <int Dim, bool kVelocity, bool kMove, bool kGradient, bool kGradFromFirst>
+struct GatherSlots {
+  static constexpr bool kFirst = kVelocity || kMove;
+  static constexpr int kOld = kFirst ? 1 : 0;
+  static constexpr int kGrad = kGradFromFirst ? 0 : kOld + (kVelocity ? 1 : 0);
+  static constexpr int kSlots = (kFirst ? 1 : 0) + (kVelocity ? 1 : 0) + (kGradient && !kGradFromFirst ? 1 : 0);
+  static constexpr int kStride = kSlots * kSlotDoubles<Dim>;
+  /// Whether the slots fit a record (not in 3D with three slots: the scalar kernel then).
+  static constexpr bool kFits = kStride <= kRecordDoubles;
+  static_assert(!kGradFromFirst || kFirst);
+};
+
+template <int Dim, bool kVelocity, bool kMove, bool kGradient, bool kGradFromFirst>
+void packGather(double* rec, NodeRange range, const double* const vL[3], const double* const vn[3],
+                const double* const vGrad[3]) {
+  using S = GatherSlots<Dim, kVelocity, kMove, kGradient, kGradFromFirst>;
+  constexpr int W = kSlotDoubles<Dim>;
+  for (std::int64_t n = range.lo; n < range.hi; ++n) {
+    double* r = rec + S::kStride * n;
+    const auto slot = [&](int s, const double* const f[3]) {
+      for (int d = 0; d < Dim; ++d) r[s * W + d] = f[d][n];
+      for (int d = Dim; d < W; ++d) r[s * W + d] = 0.0;
+    };
+    if constexpr (S::kFirst) slot(0, vL);
+    if constexpr (kVelocity) slot(S::kOld, vn);
+    if constexpr (kGradient && !kGradFromFirst) slot(S::kGrad, vGrad);
+  }
+}
+
+/// Zeroes the records of `range` (stride `stride` doubles) for the next scatter.
+inline void clearRecords(double* rec, NodeRange range, int stride) {
+  if (range.hi > range.lo)
+    std::memset(rec + stride * range.lo, 0, sizeof(double) * static_cast<std::size_t>(stride * (range.hi - range.lo)));
+}
+
+/// gridToParticles on gather records (packGather) for 2D and 3D: the sums of the scalar kernel
+/// as vector lanes, vnew and vold over the directions, L by columns (L[.][b] += v grad_b).
+template <int Dim, bool kVelocity, bool kMove, bool kGradient, bool kGradFromFirst, class Src>
+void gridToRecords(const Src& src, ParticleSet& p, std::size_t begin, std::size_t end, const GridGeom& g,
+                   const double* rec, double dt, double flip) {
+  using S = GatherSlots<Dim, kVelocity, kMove, kGradient, kGradFromFirst>;
+  using V = std::conditional_t<Dim == 2, v2d, v4d>;
+  constexpr int W = kSlotDoubles<Dim>;
+  for (std::size_t i = begin; i < end; ++i) {
+    V vnew{}, vold{}, Lc[3] = {};
+    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+      const double* r = rec + S::kStride * n;
+      V wv;
+      for (int k = 0; k < W; ++k) wv[k] = w;
+      if constexpr (S::kFirst) vnew += wv * loadVec<V>(r);
+      if constexpr (kVelocity) vold += wv * loadVec<V>(r + S::kOld * W);
+      if constexpr (kGradient) {
+        const V vg = loadVec<V>(r + S::kGrad * W);
+        const double gr[3] = {gx, gy, gz};
+        for (int b = 0; b < Dim; ++b) {
+          V gb;
+          for (int k = 0; k < W; ++k) gb[k] = gr[b];
+          Lc[b] += vg * gb;
+        }
+      }
+    });
+    for (int d = 0; d < Dim; ++d) {
+      if constexpr (kMove) p.x[d][i] += dt * vnew[d];
+      if constexpr (kVelocity)
+        p.v[d][i] = flip * (p.v[d][i] + vnew[d] - vold[d]) + (1.0 - flip) * vnew[d];
+    }
+    if constexpr (kGradient)
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) p.L[3 * a + b][i] = Lc[b][a];
   }
 }
 

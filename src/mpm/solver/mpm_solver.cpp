@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 
@@ -267,6 +269,7 @@ void MpmSolver::beginStep(double dt) {
   if (!(dt > 0)) throw std::invalid_argument("MpmSolver::beginStep: dt must be > 0, got " + num(dt));
   dt_ = dt;
   signalSpeedValid_ = false;
+  recordRangeValid_ = false;
   cells_->newStep();
   grid_->mass.fill(0.0);
   grid_->velocity.fill(0.0);
@@ -327,10 +330,24 @@ void MpmSolver::scatterToGrid(bool forces) {
   const bool loads = !scene_.loads.empty() || surfaceForces_;
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     const auto scatter = [&](const auto& src) {
-      if (forces)
-        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), grav, loads, f.data(), &sums);
-      else
-        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), &sums);
+      if constexpr (D == 1) {
+        if (forces)
+          kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), grav, loads, f.data(),
+                                                &sums);
+        else
+          kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), &sums);
+      } else {
+        // 2D / 3D: through the node records (vector lanes over the node fields, the same bits).
+        double* rec = nodeRecords();
+        if (forces) {
+          recordRange_ = kernels::scatterToRecords<D, true>(src, p_, 0, p_.size(), geom, rec, grav, loads, &sums);
+          kernels::unpackScatter<D, true>(rec, recordRange_, mass, mom.data(), f.data());
+        } else {
+          recordRange_ = kernels::scatterToRecords<D, false>(src, p_, 0, p_.size(), geom, rec, grav, loads, &sums);
+          kernels::unpackScatter<D, false>(rec, recordRange_, mass, mom.data(), f.data());
+        }
+        recordRangeValid_ = true;
+      }
     };
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
@@ -403,8 +420,33 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
   double cmax = 0;
   kernels::ParticleSums sums;  // the step's last pass (kMove): the ledger's sums, block by block in order
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
-    forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
+    // 2D / 3D: the grid's velocities packed into gather records first (the nodes the scatter
+    // reached), read as vector lanes by kernels::gridToRecords (the same bits as the scalar
+    // kernel), cleared after for the next scatter.
+    using Slots = kernels::GatherSlots<D, kVelocity, kMove, true, false>;
+    using SlotsFromFirst = kernels::GatherSlots<D, kVelocity, kMove, true, kVelocity || kMove>;
+    const bool fromFirst = (kVelocity || kMove) && vGrad[0] == vL[0];
+    const bool records = D > 1 && (fromFirst ? SlotsFromFirst::kFits : Slots::kFits);
+    double* rec = records ? nodeRecords() : nullptr;
+    const kernels::NodeRange range = recordRangeValid_ ? recordRange_ : kernels::NodeRange{0, grid_->numNodes()};
+    if constexpr (D > 1) {
+      if (records && fromFirst)
+        kernels::packGather<D, kVelocity, kMove, true, kVelocity || kMove>(rec, range, vL, vn, vGrad);
+      else if (records)
+        kernels::packGather<D, kVelocity, kMove, true, false>(rec, range, vL, vn, vGrad);
+    }
+    const auto gather = [&](std::size_t b, std::size_t e) {
+      if constexpr (D > 1 && SlotsFromFirst::kFits)
+        if (records && fromFirst)
+          return kernels::gridToRecords<D, kVelocity, kMove, true, kVelocity || kMove>(src, p_, b, e, geom, rec, dt_,
+                                                                                       flip_);
+      if constexpr (D > 1 && Slots::kFits)
+        if (records && !fromFirst)
+          return kernels::gridToRecords<D, kVelocity, kMove, true, false>(src, p_, b, e, geom, rec, dt_, flip_);
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
+    };
+    forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
+      gather(b, e);
       updateDeformation(b, e);
       if (!model) {
         if (kMove) sums.add(p_, b, e);
@@ -421,6 +463,8 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
         sums.add(p_, b, e);
       }
     });
+    if (records)
+      kernels::clearRecords(rec, range, fromFirst ? SlotsFromFirst::kStride : Slots::kStride);
   });
   if (kMove) {
     endSums_ = sums;
@@ -636,8 +680,20 @@ void MpmSolver::gridToParticles() {
   ledger_.integration += (summed ? endSums_.work : particleWork()) - ledger_.work;
 }
 
+double* MpmSolver::nodeRecords() {
+  if (!records_) {
+    const std::size_t bytes = sizeof(double) * kernels::kRecordDoubles * static_cast<std::size_t>(grid_->numNodes());
+    recordMemory_.reset(std::calloc(bytes + 64, 1));
+    if (!recordMemory_) throw std::bad_alloc();
+    const auto at = reinterpret_cast<std::uintptr_t>(recordMemory_.get());
+    records_ = reinterpret_cast<double*>((at + 63) & ~static_cast<std::uintptr_t>(63));
+  }
+  return records_;
+}
+
 void MpmSolver::endStep() {
   stencilsValid_ = false;
+  recordRangeValid_ = false;
   time_ += dt_;
   ++step_;
   migrateAndSort(scene_.mpm.sort_particles && step_ % sortInterval_ == 0);
