@@ -17,6 +17,17 @@
 
 namespace mpmice::mpm::kernels {
 
+/// GCC vector types (vector extensions: AVX registers where the build has them, SSE2 pairs on the
+/// baseline); lane-wise operations are the scalar ones.
+using v2d = double __attribute__((vector_size(16)));
+using v4d = double __attribute__((vector_size(32)));
+
+/// Lane k of v in every lane (one permute with AVX2).
+template <int k>
+inline v4d splat(v4d v) {
+  return __builtin_shufflevector(v, v, k, k, k, k);
+}
+
 /// Calls f.template operator()<Shape, Dim>() for the run-time shape and dimension.
 template <class F>
 void dispatch(ShapeKind k, int dim, F&& f) {
@@ -63,6 +74,32 @@ inline void forStencilNodes(std::int64_t o0, const GridGeom& g, const double (&w
   }
 }
 
+/// forStencilNodes with the node's weight and gradient as one vector (w, gx, gy, gz), for the
+/// record kernels: f(node offset, wg). Each lane is the product forStencilNodes forms (lane k of
+/// (w_a, dw_a, w_a, w_a) times lane k of the row's (wyz, wyz, dyz, wdz); the row's lanes are
+/// forStencilNodes' wyz, dyz, wdz), so the same bits. 2D: the row is (wy, wy, dy, dy), lane 3 unused.
+template <int N, int Dim, class F>
+inline void forStencilNodesV(std::int64_t o0, const GridGeom& g, const double (&w)[3][N], const double (&dw)[3][N],
+                             F&& f) {
+  static_assert(Dim == 2 || Dim == 3);
+  v4d ax[N];
+  for (int a = 0; a < N; ++a) ax[a] = v4d{w[0][a], dw[0][a], w[0][a], w[0][a]};
+  if constexpr (Dim == 2) {
+    for (int b = 0; b < N; ++b) {
+      const v4d row = {w[1][b], w[1][b], dw[1][b], dw[1][b]};  // lane 3 unused (gy again)
+      const std::int64_t o = o0 + b * g.sy;
+      for (int a = 0; a < N; ++a) f(o + a, ax[a] * row);
+    }
+  } else {
+    for (int c = 0; c < N; ++c)
+      for (int b = 0; b < N; ++b) {
+        const v4d row = v4d{w[1][b], w[1][b], dw[1][b], w[1][b]} * v4d{w[2][c], w[2][c], w[2][c], dw[2][c]};
+        const std::int64_t o = o0 + b * g.sy + c * g.sz;
+        for (int a = 0; a < N; ++a) f(o + a, ax[a] * row);
+      }
+  }
+}
+
 /// Stencil of one particle: first node and per-direction weights and physical gradients.
 template <class Shape, int Dim>
 struct Stencil {
@@ -95,6 +132,13 @@ struct Stencil {
     forStencilNodes<N, Dim>(o0, g, w, dw, f);
     return o0;
   }
+  /// forNodes with f(node offset, (w, gx, gy, gz)) (forStencilNodesV; 2D and 3D).
+  template <class F>
+  inline std::int64_t forNodesV(const GridGeom& g, F&& f) const {
+    const std::int64_t o0 = g.index(base[0], base[1], base[2]);
+    forStencilNodesV<N, Dim>(o0, g, w, dw, f);
+    return o0;
+  }
 
   /// Stores this stencil in a cache record (StencilCache layout).
   inline void store(std::int64_t& offset, double* rec, const GridGeom& g) const {
@@ -124,12 +168,9 @@ struct StencilCache {
   std::int64_t* offset;
   double* rec;
 
-  /// Calls f(node offset, weight, grad x, grad y, grad z) for every node of particle i's stencil;
-  /// returns the offset of its first node.
-  template <class F>
-  inline std::int64_t forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+  /// Particle i's weights and gradients per direction.
+  inline void weights(std::size_t i, const GridGeom& g, double (&w)[3][N], double (&dw)[3][N]) const {
     const double* r = rec + i * kRecord;
-    double w[3][N], dw[3][N];
     if constexpr (kCompactRecord<Shape>) {
       for (int d = 0; d < Dim; ++d) {
         w[d][0] = 1.0 - r[d];
@@ -144,7 +185,22 @@ struct StencilCache {
           dw[d][a] = r[(Dim + d) * N + a];
         }
     }
+  }
+  /// Calls f(node offset, weight, grad x, grad y, grad z) for every node of particle i's stencil;
+  /// returns the offset of its first node.
+  template <class F>
+  inline std::int64_t forNodes(std::size_t i, const GridGeom& g, F&& f) const {
+    double w[3][N], dw[3][N];
+    weights(i, g, w, dw);
     forStencilNodes<N, Dim>(offset[i], g, w, dw, f);
+    return offset[i];
+  }
+  /// forNodes with f(node offset, (w, gx, gy, gz)) (forStencilNodesV; 2D and 3D).
+  template <class F>
+  inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+    double w[3][N], dw[3][N];
+    weights(i, g, w, dw);
+    forStencilNodesV<N, Dim>(offset[i], g, w, dw, f);
     return offset[i];
   }
 };
@@ -164,6 +220,13 @@ struct EvaluatedStencils {
     s.compute(p, i, g);
     return s.forNodes(g, f);
   }
+  /// The vector form evaluates into a local stencil (its values stay in registers).
+  template <class F>
+  inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+    Stencil<Shape, Dim> st;
+    st.compute(p, i, g);
+    return st.forNodesV(g, f);
+  }
 };
 /// Evaluated and stored in a StencilCache for the passes after it (the step's particle-to-grid).
 template <class Shape, int Dim>
@@ -177,6 +240,13 @@ struct StoredStencils {
     s.compute(p, i, g);
     s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
     return s.forNodes(g, f);
+  }
+  template <class F>
+  inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+    Stencil<Shape, Dim> s;
+    s.compute(p, i, g);
+    s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
+    return s.forNodesV(g, f);
   }
 };
 
@@ -382,9 +452,6 @@ void gridToParticles(const Src& src, ParticleSet& p, std::size_t begin, std::siz
 // records packed from the fields before it (packGather). Both cover only the nodes the particles'
 // stencils reach (NodeRange), so the records' memory is touched where the particles are.
 
-using v2d = double __attribute__((vector_size(16)));
-using v4d = double __attribute__((vector_size(32)));
-
 /// Doubles per node record (64 bytes).
 inline constexpr int kRecordDoubles = 8;
 
@@ -441,18 +508,19 @@ struct RecordScatter {
       }
     }
   }
-  inline void operator()(double* rec, std::int64_t n, double w, double gx, double gy, double gz) const {
+  /// Node n's record += this particle's terms; wg = (w, gx, gy, gz) (forStencilNodesV).
+  inline void operator()(double* rec, std::int64_t n, v4d wg) const {
     double* r = rec + kRecordDoubles * n;
-    const v4d wv = {w, w, w, w};
+    const v4d wv = splat<0>(wg);
     storeVec(r, loadVec<v4d>(r) + mv * wv);
     if constexpr (kForces) {
+      const v4d gxv = splat<1>(wg), gyv = splat<2>(wg);
       if constexpr (Dim == 2) {
         // Two lanes: the 2D force has no z component.
-        const v2d w2 = {w, w}, gx2 = {gx, gx}, gy2 = {gy, gy};
-        const v2d b2 = {b[0], b[1]}, c0 = {c[0][0], c[0][1]}, c1 = {c[1][0], c[1][1]};
-        storeVec(r + 4, loadVec<v2d>(r + 4) + (b2 * w2 - (c0 * gx2 + c1 * gy2)));
+        const auto lo = [](v4d v) { return __builtin_shufflevector(v, v, 0, 1); };
+        storeVec(r + 4, loadVec<v2d>(r + 4) + (lo(b) * lo(wv) - (lo(c[0]) * lo(gxv) + lo(c[1]) * lo(gyv))));
       } else {
-        const v4d gxv = {gx, gx, gx, gx}, gyv = {gy, gy, gy, gy}, gzv = {gz, gz, gz, gz};
+        const v4d gzv = splat<3>(wg);
         storeVec(r + 4, loadVec<v4d>(r + 4) + (b * wv - ((c[0] * gxv + c[1] * gyv) + c[2] * gzv)));
       }
     }
@@ -474,9 +542,7 @@ NodeRange scatterToRecords(const Src& src, const ParticleSet& p, std::size_t beg
       wk += p.work[i];
     }
     const RecordScatter<Dim, kForces> rs(p, i, gravity, loads);
-    const std::int64_t o0 = src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
-      rs(rec, n, w, gx, gy, gz);
-    });
+    const std::int64_t o0 = src.forNodesV(i, g, [&](std::int64_t n, v4d wg) { rs(rec, n, wg); });
     lo = std::min(lo, o0);
     hi = std::max(hi, o0);
   }
@@ -554,23 +620,43 @@ void gridToRecords(const Src& src, ParticleSet& p, std::size_t begin, std::size_
   using V = std::conditional_t<Dim == 2, v2d, v4d>;
   constexpr int W = kSlotDoubles<Dim>;
   for (std::size_t i = begin; i < end; ++i) {
+    // 2D: vnew and vold side by side in one vector when both are gathered (their slots are
+    // adjacent), L as (L_xx, L_yx, L_xy, L_yy) += (v_x, v_y, v_x, v_y) (gx, gx, gy, gy).
+    // 3D: vnew, vold and the columns of L, each a vector over the directions.
     V vnew{}, vold{}, Lc[3] = {};
-    src.forNodes(i, g, [&](std::int64_t n, double w, double gx, double gy, double gz) {
+    v4d vv{}, L4{};
+    src.forNodesV(i, g, [&](std::int64_t n, v4d wg) {
       const double* r = rec + S::kStride * n;
-      V wv;
-      for (int k = 0; k < W; ++k) wv[k] = w;
-      if constexpr (S::kFirst) vnew += wv * loadVec<V>(r);
-      if constexpr (kVelocity) vold += wv * loadVec<V>(r + S::kOld * W);
-      if constexpr (kGradient) {
-        const V vg = loadVec<V>(r + S::kGrad * W);
-        const double gr[3] = {gx, gy, gz};
-        for (int b = 0; b < Dim; ++b) {
-          V gb;
-          for (int k = 0; k < W; ++k) gb[k] = gr[b];
-          Lc[b] += vg * gb;
+      const v4d wv = splat<0>(wg);
+      if constexpr (Dim == 2) {
+        const auto lo = [](v4d v) { return __builtin_shufflevector(v, v, 0, 1); };
+        if constexpr (S::kFirst && kVelocity)
+          vv += wv * loadVec<v4d>(r);
+        else if constexpr (S::kFirst)
+          vnew += lo(wv) * loadVec<v2d>(r);
+        if constexpr (kGradient) {
+          const v2d vg = loadVec<v2d>(r + S::kGrad * W);
+          L4 += __builtin_shufflevector(vg, vg, 0, 1, 0, 1) * __builtin_shufflevector(wg, wg, 1, 1, 2, 2);
+        }
+      } else {
+        if constexpr (S::kFirst) vnew += wv * loadVec<V>(r);
+        if constexpr (kVelocity) vold += wv * loadVec<V>(r + S::kOld * W);
+        if constexpr (kGradient) {
+          const V vg = loadVec<V>(r + S::kGrad * W);
+          Lc[0] += vg * splat<1>(wg);
+          Lc[1] += vg * splat<2>(wg);
+          Lc[2] += vg * splat<3>(wg);
         }
       }
     });
+    if constexpr (Dim == 2) {
+      if constexpr (S::kFirst && kVelocity) {
+        vnew = V{vv[0], vv[1]};
+        vold = V{vv[2], vv[3]};
+      }
+      Lc[0] = V{L4[0], L4[1]};
+      Lc[1] = V{L4[2], L4[3]};
+    }
     for (int d = 0; d < Dim; ++d) {
       if constexpr (kMove) p.x[d][i] += dt * vnew[d];
       if constexpr (kVelocity)
