@@ -106,15 +106,26 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
 
 double MpmSolver::nodeKinetic(const Field& v) const {
   const double* m = grid_->mass.data();
-  double e = 0;
-  for (std::int64_t k = 0; k < grid_->numNodes(); ++k) {
-    const double w = nodeWeight_[static_cast<std::size_t>(k)];
-    if (w == 0.0) continue;
-    double v2 = 0;
-    for (int d = 0; d < v.ncomp(); ++d) v2 += v.data(d)[k] * v.data(d)[k];  // 2D: no z (was + 0)
-    e += w * 0.5 * m[k] * v2;
+  const double* nw = nodeWeight_.data();
+  const auto vc = components(v);
+  const std::int64_t n = grid_->numNodes();
+  // The number of components a constant of the loop (2D: no z, which was + 0).
+  const auto sum = [&]<int kComp>() {
+    double e = 0;
+    for (std::int64_t k = 0; k < n; ++k) {
+      const double w = nw[k];
+      if (w == 0.0) continue;
+      double v2 = 0;
+      for (int d = 0; d < kComp; ++d) v2 += vc[d][k] * vc[d][k];
+      e += w * 0.5 * m[k] * v2;
+    }
+    return e;
+  };
+  switch (v.ncomp()) {
+    case 1: return sum.template operator()<1>();
+    case 2: return sum.template operator()<2>();
+    default: return sum.template operator()<3>();
   }
-  return e;
 }
 
 double MpmSolver::particleKinetic() const {
@@ -372,8 +383,9 @@ void MpmSolver::finishParticlesToGrid() {
   bcs_.mirror(g.mass, Parity::Scalar);
   const std::int64_t n = g.numNodes();
   const int dim = scene_.mesh.dim();
+  const double floor = massFloor_;  // a local: the member was reloaded after every store
   for (std::int64_t k = 0; k < n; ++k) {
-    const double inv = mass[k] > massFloor_ ? 1.0 / mass[k] : 0.0;
+    const double inv = mass[k] > floor ? 1.0 / mass[k] : 0.0;
     for (int d = 0; d < dim; ++d) mom[d][k] *= inv;
   }
   applyBC(g.velocity);
@@ -475,6 +487,21 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
 }
 
 namespace {
+// One component of the grid update, v_L = v + dt ((f + f_ext) / m - c v) where m > floor, else v,
+// over restrict-qualified arrays so that it vectorizes (lane by lane the same operations). The
+// division is taken on every node (by 1 where m <= floor, whose result is not used): a division
+// under the condition is not if-converted.
+void nodeVelocityUpdate(const double* __restrict__ m, const double* __restrict__ v, const double* __restrict__ f,
+                        const double* __restrict__ fe, double* __restrict__ vl, std::int64_t n, double dt, double c,
+                        double floor) {
+  for (std::int64_t k = 0; k < n; ++k) {
+    const bool moves = m[k] > floor;
+    const double mk = moves ? m[k] : 1.0;
+    const double a = v[k] + dt * ((f[k] + fe[k]) / mk - c * v[k]);
+    vl[k] = moves ? a : v[k];
+  }
+}
+
 // F_n+1 = (I + dt L) F_n and V = V0 det F for 1D / 2D particles over distinct columns (restrict-
 // qualified parameters, which GCC honours where it ignores them on locals: the loop vectorizes,
 // lane by lane the same operations). In 1D L's yx, xy and yy are zero: those terms are left out.
@@ -559,16 +586,11 @@ void MpmSolver::updateGrid() {
   if (comm_.size() > 1) g.fill({&g.externalForce});
   const std::int64_t n = g.numNodes();
   const int dim = scene_.mesh.dim();
-  const double dt = dt_, c = damping_;
+  const double dt = dt_, c = damping_, floor = accelFloor_;
   const double* m = g.mass.data();
-  for (int d = 0; d < dim; ++d) {
-    const double* v = g.velocity.data(d);
-    const double* f = g.force.data(d);
-    const double* fe = g.externalForce.data(d);
-    double* vl = g.velocityL.data(d);
-    for (std::int64_t k = 0; k < n; ++k)
-      vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
-  }
+  for (int d = 0; d < dim; ++d)
+    nodeVelocityUpdate(m, g.velocity.data(d), g.force.data(d), g.externalForce.data(d), g.velocityL.data(d), n, dt,
+                       c, floor);
   applyBC(g.velocityL);
   // The work of the coupling forces, as the update realised it (a constrained component moves
   // neither at n nor at L, so it does none), for the energy ledger below; the coupler books the
@@ -576,18 +598,24 @@ void MpmSolver::updateGrid() {
   // floor) and takes it from the fluid there.
   // The ledger: the nodes' kinetic energy change less the coupling and damping work is the
   // internal forces' (with the walls' constraints), to be met by the particles' stress work.
+  // (The fields' component pointers and the floor in locals: read through the Field objects in
+  // the loop they were reloaded after every store to w.)
   double* w = g.externalWork.data();
+  const double* nwk = nodeWeight_.data();
+  const auto vn = components(g.velocity);
+  const auto vl = components(g.velocityL);
+  const auto fe = components(g.externalForce);
   double wext = 0, wdamp = 0;
   for (std::int64_t k = 0; k < n; ++k) {
     double s = 0, sd = 0;
-    if (m[k] > accelFloor_)
+    if (m[k] > floor)
       for (int d = 0; d < dim; ++d) {
-        const double vbar = 0.5 * (g.velocity.data(d)[k] + g.velocityL.data(d)[k]);
-        s += g.externalForce.data(d)[k] * vbar;
-        sd -= c * m[k] * g.velocity.data(d)[k] * vbar;
+        const double vbar = 0.5 * (vn[d][k] + vl[d][k]);
+        s += fe[d][k] * vbar;
+        sd -= c * m[k] * vn[d][k] * vbar;
       }
     w[k] = dt * s;
-    const double nw = nodeWeight_[static_cast<std::size_t>(k)];
+    const double nw = nwk[k];
     wext += nw * w[k];
     wdamp += nw * dt * sd;
   }
