@@ -745,7 +745,19 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   // The grid coordinate as the stencils compute it (GridGeom: times 1 / dx), not a division per
   // particle and direction (the division was 4 % of a 2D linear step).
   const GridGeom geom = grid_->geom();
-  for (std::size_t i = 0; i < n; ++i) {
+  // First whether any particle is outside at all, in a loop without early exits that vectorizes
+  // (q >= 0 and q < cells holds exactly for the finite coordinates inside: NaN fails both); the
+  // search for the face below runs only when one is.
+  std::size_t outsideCount = 0;
+  for (int d = 0; d < dim; ++d) {
+    const double* xd = p_.x[d].data();
+    const double o = geom.origin[d], inv = geom.invDx[d], cells = mesh.cells()[d];
+    for (std::size_t i = 0; i < n; ++i) {
+      const double q = (xd[i] - o) * inv;
+      outsideCount += !(q >= 0.0 && q < cells);
+    }
+  }
+  for (std::size_t i = 0; i < n && outsideCount > 0; ++i) {
     int face = -1;  // -1 inside; 0..5 the face crossed; 6 not finite
     for (int d = 0; d < dim && face < 0; ++d) {
       const double q = (p_.x[d][i] - geom.origin[d]) * geom.invDx[d];
