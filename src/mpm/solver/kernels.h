@@ -11,6 +11,10 @@
 #include <cstring>
 #include <type_traits>
 
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
+
 #include "mpm/grid/grid.h"
 #include "mpm/particles/particle_set.h"
 #include "mpm/shape/shape_function.h"
@@ -205,6 +209,55 @@ struct StencilCache {
   }
 };
 
+#ifdef __AVX__
+/// Particle i's quadratic B-spline stencil evaluated with the directions as vector lanes, then
+/// forStencilNodesV's loop over its nodes: f(node offset, (w, gx, gy, gz)). Lane d takes the
+/// operations of Stencil::compute and BSpline2Shape::eval for direction d (xi = (x - origin) / dx
+/// as a product with 1 / dx; the floor by a rounding instruction, + 0.0 making a -0 floor the +0
+/// of floorIndex's int: the same value, so the same weights), and the node vectors are formed
+/// from the lanes as forStencilNodesV forms them from the arrays: the same bits. Lanes past Dim
+/// are padding (their values unused).
+template <int Dim, class F>
+inline std::int64_t bspline2NodesV(const ParticleSet& p, std::size_t i, const GridGeom& g, F&& f) {
+  static_assert(Dim == 2 || Dim == 3);
+  const v4d x = {p.x[0][i], p.x[1][i], Dim == 3 ? p.x[2][i] : 0.0, 0.0};
+  const v4d origin = {g.origin[0], g.origin[1], Dim == 3 ? g.origin[2] : 0.0, 0.0};
+  const v4d invDx = {g.invDx[0], g.invDx[1], Dim == 3 ? g.invDx[2] : 1.0, 1.0};
+  const v4d xi = (x - origin) * invDx;
+  const v4d xm = xi - 0.5;
+  const v4d fl = v4d(_mm256_floor_pd(__m256d(xm))) + 0.0;
+  const __m128i base = _mm256_cvttpd_epi32(__m256d(fl));
+  const v4d r0 = xi - fl;
+  const v4d r1 = r0 - 1.0;
+  const v4d r2 = r0 - 2.0;
+  const v4d t0 = 1.5 - r0, t2 = 1.5 + r2;
+  const v4d w[3] = {0.5 * t0 * t0, 0.75 - r1 * r1, 0.5 * t2 * t2};
+  const v4d dw[3] = {-t0 * invDx, (-2.0 * r1) * invDx, t2 * invDx};
+  const std::int64_t o0 = g.index(_mm_extract_epi32(base, 0), _mm_extract_epi32(base, 1),
+                                  Dim == 3 ? _mm_extract_epi32(base, 2) : 0);
+  // (w_a, dw_a, w_a, w_a) of direction x, as forStencilNodesV's ax.
+  v4d ax[3];
+  for (int a = 0; a < 3; ++a) ax[a] = __builtin_shufflevector(w[a], dw[a], 0, 4, 0, 0);
+  if constexpr (Dim == 2) {
+    for (int b = 0; b < 3; ++b) {
+      const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 5);  // (wy, wy, dy, dy)
+      const std::int64_t o = o0 + b * g.sy;
+      for (int a = 0; a < 3; ++a) f(o + a, ax[a] * row);
+    }
+  } else {
+    for (int c = 0; c < 3; ++c) {
+      const v4d zc = __builtin_shufflevector(w[c], dw[c], 2, 2, 2, 6);  // (wz, wz, wz, dz)
+      for (int b = 0; b < 3; ++b) {
+        const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 1) * zc;  // (wyz, wyz, dyz, wdz)
+        const std::int64_t o = o0 + b * g.sy + c * g.sz;
+        for (int a = 0; a < 3; ++a) f(o + a, ax[a] * row);
+      }
+    }
+  }
+  return o0;
+}
+#endif
+
 /// Stencil sources of the kernels: forNodes(i, g, f) over particle i's stencil.
 /// Evaluated on use (the B-splines' step passes, the MPM-ICE operators' extra passes). Where the
 /// stencil lives is chosen by instruction count (callgrind, 3 steps of the 2D bench block): here a
@@ -220,9 +273,13 @@ struct EvaluatedStencils {
     s.compute(p, i, g);
     return s.forNodes(g, f);
   }
-  /// The vector form evaluates into a local stencil (its values stay in registers).
+  /// The vector form evaluates into a local stencil (its values stay in registers); the quadratic
+  /// B-spline with AVX in vector lanes over the directions (bspline2NodesV).
   template <class F>
   inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+#ifdef __AVX__
+    if constexpr (std::is_same_v<Shape, BSpline2Shape>) return bspline2NodesV<Dim>(p, i, g, f);
+#endif
     Stencil<Shape, Dim> st;
     st.compute(p, i, g);
     return st.forNodesV(g, f);
