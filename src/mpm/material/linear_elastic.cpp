@@ -21,7 +21,9 @@ void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
   for (int k = 0; k < 6; ++k) Sc[k] = p.stress[k].data();
   const double* vol = p.vol.data();
   double* work = p.work.data();
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
+#endif
   for (std::size_t i = begin; i < end; ++i) {
     Mat3 L;
     for (int k = 0; k < 9; ++k) L[k] = Lc[k][i];

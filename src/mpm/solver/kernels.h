@@ -104,6 +104,80 @@ inline void forStencilNodesV(std::int64_t o0, const GridGeom& g, const double (&
   }
 }
 
+#ifdef __AVX__
+/// forStencilNodesV's loop from per-direction lane vectors (AVX builds): w[a] and dw[a] hold node
+/// a's weight and gradient factor of direction d in lane d (lanes past Dim unused). The node
+/// vectors are formed from the lanes by shuffles, the values forStencilNodesV forms from arrays
+/// w[d][a], dw[d][a] (ax = (w_a, dw_a, w_a, w_a) of x; the rows (wy, wy, dy, dy) in 2D,
+/// (wy, wy, dy, wy) * (wz, wz, wz, dz) in 3D): the same products, the same bits.
+template <int N, int Dim, class F>
+inline void forLaneNodesV(std::int64_t o0, const GridGeom& g, const v4d (&w)[N], const v4d (&dw)[N], F&& f) {
+  static_assert(Dim == 2 || Dim == 3);
+  v4d ax[N];
+  for (int a = 0; a < N; ++a) ax[a] = __builtin_shufflevector(w[a], dw[a], 0, 4, 0, 0);
+  if constexpr (Dim == 2) {
+    for (int b = 0; b < N; ++b) {
+      const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 5);
+      const std::int64_t o = o0 + b * g.sy;
+      for (int a = 0; a < N; ++a) f(o + a, ax[a] * row);
+    }
+  } else {
+    for (int c = 0; c < N; ++c) {
+      const v4d zc = __builtin_shufflevector(w[c], dw[c], 2, 2, 2, 6);
+      for (int b = 0; b < N; ++b) {
+        const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 1) * zc;
+        const std::int64_t o = o0 + b * g.sy + c * g.sz;
+        for (int a = 0; a < N; ++a) f(o + a, ax[a] * row);
+      }
+    }
+  }
+}
+
+/// 1 / dx per direction as lanes (1 past Dim).
+template <int Dim>
+inline v4d invDxLanes(const GridGeom& g) {
+  return v4d{g.invDx[0], g.invDx[1], Dim == 3 ? g.invDx[2] : 1.0, 1.0};
+}
+
+/// Particle i's grid coordinates (x - origin) * (1 / dx) as lanes, Stencil::compute's operations
+/// (0 past Dim).
+template <int Dim>
+inline v4d gridCoordinateLanes(const ParticleSet& p, std::size_t i, const GridGeom& g) {
+  const v4d x = {p.x[0][i], p.x[1][i], Dim == 3 ? p.x[2][i] : 0.0, 0.0};
+  const v4d origin = {g.origin[0], g.origin[1], Dim == 3 ? g.origin[2] : 0.0, 0.0};
+  return (x - origin) * invDxLanes<Dim>(g);
+}
+
+/// floorIndex of each lane as a double (a rounding instruction; + 0.0 makes a -0 floor the +0 of
+/// floorIndex's int: the same value) and the offset of the node at those indices.
+template <int Dim>
+inline v4d floorLanes(v4d x, const GridGeom& g, std::int64_t& offset) {
+  const v4d fl = v4d(_mm256_floor_pd(__m256d(x))) + 0.0;
+  const __m128i b = _mm256_cvttpd_epi32(__m256d(fl));
+  offset = g.index(_mm_extract_epi32(b, 0), _mm_extract_epi32(b, 1), Dim == 3 ? _mm_extract_epi32(b, 2) : 0);
+  return fl;
+}
+
+/// Particle i's quadratic B-spline stencil evaluated with the directions as lanes: lane d takes
+/// the operations of Stencil::compute and BSpline2Shape::eval for direction d; then
+/// forLaneNodesV. Returns the first node's offset.
+template <int Dim, class F>
+inline std::int64_t bspline2NodesV(const ParticleSet& p, std::size_t i, const GridGeom& g, F&& f) {
+  const v4d invDx = invDxLanes<Dim>(g);
+  const v4d xi = gridCoordinateLanes<Dim>(p, i, g);
+  std::int64_t o0;
+  const v4d fl = floorLanes<Dim>(xi - 0.5, g, o0);
+  const v4d r0 = xi - fl;
+  const v4d r1 = r0 - 1.0;
+  const v4d r2 = r0 - 2.0;
+  const v4d t0 = 1.5 - r0, t2 = 1.5 + r2;
+  const v4d w[3] = {0.5 * t0 * t0, 0.75 - r1 * r1, 0.5 * t2 * t2};
+  const v4d dw[3] = {-t0 * invDx, (-2.0 * r1) * invDx, t2 * invDx};
+  forLaneNodesV<3, Dim>(o0, g, w, dw, f);
+  return o0;
+}
+#endif
+
 /// Stencil of one particle: first node and per-direction weights and physical gradients.
 template <class Shape, int Dim>
 struct Stencil {
@@ -199,64 +273,27 @@ struct StencilCache {
     forStencilNodes<N, Dim>(offset[i], g, w, dw, f);
     return offset[i];
   }
-  /// forNodes with f(node offset, (w, gx, gy, gz)) (forStencilNodesV; 2D and 3D).
+  /// forNodes with f(node offset, (w, gx, gy, gz)) (forStencilNodesV; 2D and 3D). The linear
+  /// hat's record with AVX as lanes: weights()'s operations lane by lane, then forLaneNodesV.
   template <class F>
   inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+#ifdef __AVX__
+    if constexpr (std::is_same_v<Shape, LinearShape>) {
+      const double* r = rec + i * kRecord;
+      const v4d invDx = invDxLanes<Dim>(g);
+      const v4d fr = {r[0], r[1], Dim == 3 ? r[2] : 0.0, 0.0};
+      const v4d w[2] = {1.0 - fr, fr};
+      const v4d dw[2] = {-1.0 * invDx, 1.0 * invDx};
+      forLaneNodesV<2, Dim>(offset[i], g, w, dw, f);
+      return offset[i];
+    }
+#endif
     double w[3][N], dw[3][N];
     weights(i, g, w, dw);
     forStencilNodesV<N, Dim>(offset[i], g, w, dw, f);
     return offset[i];
   }
 };
-
-#ifdef __AVX__
-/// Particle i's quadratic B-spline stencil evaluated with the directions as vector lanes, then
-/// forStencilNodesV's loop over its nodes: f(node offset, (w, gx, gy, gz)). Lane d takes the
-/// operations of Stencil::compute and BSpline2Shape::eval for direction d (xi = (x - origin) / dx
-/// as a product with 1 / dx; the floor by a rounding instruction, + 0.0 making a -0 floor the +0
-/// of floorIndex's int: the same value, so the same weights), and the node vectors are formed
-/// from the lanes as forStencilNodesV forms them from the arrays: the same bits. Lanes past Dim
-/// are padding (their values unused).
-template <int Dim, class F>
-inline std::int64_t bspline2NodesV(const ParticleSet& p, std::size_t i, const GridGeom& g, F&& f) {
-  static_assert(Dim == 2 || Dim == 3);
-  const v4d x = {p.x[0][i], p.x[1][i], Dim == 3 ? p.x[2][i] : 0.0, 0.0};
-  const v4d origin = {g.origin[0], g.origin[1], Dim == 3 ? g.origin[2] : 0.0, 0.0};
-  const v4d invDx = {g.invDx[0], g.invDx[1], Dim == 3 ? g.invDx[2] : 1.0, 1.0};
-  const v4d xi = (x - origin) * invDx;
-  const v4d xm = xi - 0.5;
-  const v4d fl = v4d(_mm256_floor_pd(__m256d(xm))) + 0.0;
-  const __m128i base = _mm256_cvttpd_epi32(__m256d(fl));
-  const v4d r0 = xi - fl;
-  const v4d r1 = r0 - 1.0;
-  const v4d r2 = r0 - 2.0;
-  const v4d t0 = 1.5 - r0, t2 = 1.5 + r2;
-  const v4d w[3] = {0.5 * t0 * t0, 0.75 - r1 * r1, 0.5 * t2 * t2};
-  const v4d dw[3] = {-t0 * invDx, (-2.0 * r1) * invDx, t2 * invDx};
-  const std::int64_t o0 = g.index(_mm_extract_epi32(base, 0), _mm_extract_epi32(base, 1),
-                                  Dim == 3 ? _mm_extract_epi32(base, 2) : 0);
-  // (w_a, dw_a, w_a, w_a) of direction x, as forStencilNodesV's ax.
-  v4d ax[3];
-  for (int a = 0; a < 3; ++a) ax[a] = __builtin_shufflevector(w[a], dw[a], 0, 4, 0, 0);
-  if constexpr (Dim == 2) {
-    for (int b = 0; b < 3; ++b) {
-      const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 5);  // (wy, wy, dy, dy)
-      const std::int64_t o = o0 + b * g.sy;
-      for (int a = 0; a < 3; ++a) f(o + a, ax[a] * row);
-    }
-  } else {
-    for (int c = 0; c < 3; ++c) {
-      const v4d zc = __builtin_shufflevector(w[c], dw[c], 2, 2, 2, 6);  // (wz, wz, wz, dz)
-      for (int b = 0; b < 3; ++b) {
-        const v4d row = __builtin_shufflevector(w[b], dw[b], 1, 1, 5, 1) * zc;  // (wyz, wyz, dyz, wdz)
-        const std::int64_t o = o0 + b * g.sy + c * g.sz;
-        for (int a = 0; a < 3; ++a) f(o + a, ax[a] * row);
-      }
-    }
-  }
-  return o0;
-}
-#endif
 
 /// Stencil sources of the kernels: forNodes(i, g, f) over particle i's stencil.
 /// Evaluated on use (the B-splines' step passes, the MPM-ICE operators' extra passes). Where the
@@ -298,8 +335,25 @@ struct StoredStencils {
     s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);
     return s.forNodes(g, f);
   }
+  /// The linear hat with AVX as lanes: Stencil::compute, LinearShape::eval and Stencil::store
+  /// lane by lane (the record is the fraction f per direction), then forLaneNodesV.
   template <class F>
   inline std::int64_t forNodesV(std::size_t i, const GridGeom& g, F&& f) const {
+#ifdef __AVX__
+    if constexpr (std::is_same_v<Shape, LinearShape>) {
+      const v4d invDx = invDxLanes<Dim>(g);
+      const v4d xi = gridCoordinateLanes<Dim>(p, i, g);
+      std::int64_t o0;
+      const v4d fr = xi - floorLanes<Dim>(xi, g, o0);
+      cache.offset[i] = o0;
+      double* r = cache.rec + i * StencilCache<Shape, Dim>::kRecord;
+      for (int d = 0; d < Dim; ++d) r[d] = fr[d];
+      const v4d w[2] = {1.0 - fr, fr};
+      const v4d dw[2] = {-1.0 * invDx, 1.0 * invDx};
+      forLaneNodesV<2, Dim>(o0, g, w, dw, f);
+      return o0;
+    }
+#endif
     Stencil<Shape, Dim> s;
     s.compute(p, i, g);
     s.store(cache.offset[i], cache.rec + i * StencilCache<Shape, Dim>::kRecord, g);

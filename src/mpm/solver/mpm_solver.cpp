@@ -548,7 +548,9 @@ void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
     }
     const double* vol0 = p_.vol0.data();
     double* vol = p_.vol.data();
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
+#endif
     for (std::size_t i = begin; i < end; ++i) {
       double Fo[9], Fn[9];
       for (int k = 0; k < 9; ++k) Fo[k] = Fc[k][i];
