@@ -19,6 +19,15 @@
 #include "mpm/particles/particle_set.h"
 #include "mpm/shape/shape_function.h"
 
+// The vector types below are passed and returned by value between inline functions of one
+// translation unit; without AVX (MPMICE_SIMD baseline) GCC notes that a 32-byte vector's ABI
+// differs from an AVX build's (-Wpsabi), which matters only for calls across objects built with
+// different flags: none here.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::mpm::kernels {
 
 /// GCC vector types (vector extensions: AVX registers where the build has them, SSE2 pairs on the
@@ -780,3 +789,7 @@ void gridToRecords(const Src& src, ParticleSet& p, std::size_t begin, std::size_
 }
 
 }  // namespace mpmice::mpm::kernels
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

@@ -14,6 +14,14 @@
 #include "mpm/solver/kernels.h"
 #include "mpm/solver/startup_check.h"
 
+// kernels.h's vector types are passed by value between this file's inline functions; without
+// AVX (MPMICE_SIMD baseline) GCC notes the ABI of such calls across objects built with different
+// flags (-Wpsabi), which none are. The note comes at the end of the file, where the instantiated
+// kernels are emitted, so it is silenced for the file.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::mpm {
 
 using core::Field;
