@@ -13,16 +13,29 @@ void LinearElastic::updateStress(ParticleSet& p, std::size_t begin, std::size_t 
     updatePlanar(p, begin, end, dt);
     return;
   }
+  // 3D: the column pointers in locals and no dependence assumed between particles (ivdep, the
+  // columns are distinct): the loop vectorizes, lane by lane the same operations.
+  const double* Lc[9];
+  double* Sc[6];
+  for (int k = 0; k < 9; ++k) Lc[k] = p.L[k].data();
+  for (int k = 0; k < 6; ++k) Sc[k] = p.stress[k].data();
+  const double* vol = p.vol.data();
+  double* work = p.work.data();
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
   for (std::size_t i = begin; i < end; ++i) {
-    const Mat3 L = loadL(p, i);
+    Mat3 L;
+    for (int k = 0; k < 9; ++k) L[k] = Lc[k][i];
     const Sym3 D = symPart(L);
-    const Sym3 s = loadStress(p, i);
+    Sym3 s;
+    for (int k = 0; k < 6; ++k) s[k] = Sc[k][i];
     const Sym3 spin = jaumannSpin(L, s);
     const double lt = lam * trace(D);
     Sym3 n;
     for (int k = 0; k < 6; ++k) n[k] = s[k] + dt * (twoG * D[k] + (k < 3 ? lt : 0.0) + spin[k]);
-    p.work[i] += stressWork(s, n, D, p.vol[i], dt);
-    storeStress(p, i, n);
+    work[i] += stressWork(s, n, D, vol[i], dt);
+    for (int k = 0; k < 6; ++k) Sc[k][i] = n[k];
   }
 }
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,6 +13,14 @@
 #include "mpm/material/tensor.h"
 #include "mpm/solver/kernels.h"
 #include "mpm/solver/startup_check.h"
+
+// kernels.h's vector types are passed by value between this file's inline functions; without
+// AVX (MPMICE_SIMD baseline) GCC notes the ABI of such calls across objects built with different
+// flags (-Wpsabi), which none are. The note comes at the end of the file, where the instantiated
+// kernels are emitted, so it is silenced for the file.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 namespace mpmice::mpm {
 
@@ -104,15 +114,26 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
 
 double MpmSolver::nodeKinetic(const Field& v) const {
   const double* m = grid_->mass.data();
-  double e = 0;
-  for (std::int64_t k = 0; k < grid_->numNodes(); ++k) {
-    const double w = nodeWeight_[static_cast<std::size_t>(k)];
-    if (w == 0.0) continue;
-    double v2 = 0;
-    for (int d = 0; d < v.ncomp(); ++d) v2 += v.data(d)[k] * v.data(d)[k];  // 2D: no z (was + 0)
-    e += w * 0.5 * m[k] * v2;
+  const double* nw = nodeWeight_.data();
+  const auto vc = components(v);
+  const std::int64_t n = grid_->numNodes();
+  // The number of components a constant of the loop (2D: no z, which was + 0).
+  const auto sum = [&]<int kComp>() {
+    double e = 0;
+    for (std::int64_t k = 0; k < n; ++k) {
+      const double w = nw[k];
+      if (w == 0.0) continue;
+      double v2 = 0;
+      for (int d = 0; d < kComp; ++d) v2 += vc[d][k] * vc[d][k];
+      e += w * 0.5 * m[k] * v2;
+    }
+    return e;
+  };
+  switch (v.ncomp()) {
+    case 1: return sum.template operator()<1>();
+    case 2: return sum.template operator()<2>();
+    default: return sum.template operator()<3>();
   }
-  return e;
 }
 
 double MpmSolver::particleKinetic() const {
@@ -267,6 +288,7 @@ void MpmSolver::beginStep(double dt) {
   if (!(dt > 0)) throw std::invalid_argument("MpmSolver::beginStep: dt must be > 0, got " + num(dt));
   dt_ = dt;
   signalSpeedValid_ = false;
+  recordRangeValid_ = false;
   cells_->newStep();
   grid_->mass.fill(0.0);
   grid_->velocity.fill(0.0);
@@ -327,10 +349,24 @@ void MpmSolver::scatterToGrid(bool forces) {
   const bool loads = !scene_.loads.empty() || surfaceForces_;
   dispatch(shape_, scene_.mesh.dim(), [&]<class S, int D>() {
     const auto scatter = [&](const auto& src) {
-      if (forces)
-        kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), grav, loads, f.data(), &sums);
-      else
-        kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), &sums);
+      if constexpr (D == 1) {
+        if (forces)
+          kernels::particlesToGridWithForces<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), grav, loads, f.data(),
+                                                &sums);
+        else
+          kernels::particlesToGrid<D>(src, p_, 0, p_.size(), geom, mass, mom.data(), &sums);
+      } else {
+        // 2D / 3D: through the node records (vector lanes over the node fields, the same bits).
+        double* rec = nodeRecords();
+        if (forces) {
+          recordRange_ = kernels::scatterToRecords<D, true>(src, p_, 0, p_.size(), geom, rec, grav, loads, &sums);
+          kernels::unpackScatter<D, true>(rec, recordRange_, mass, mom.data(), f.data());
+        } else {
+          recordRange_ = kernels::scatterToRecords<D, false>(src, p_, 0, p_.size(), geom, rec, grav, loads, &sums);
+          kernels::unpackScatter<D, false>(rec, recordRange_, mass, mom.data(), f.data());
+        }
+        recordRangeValid_ = true;
+      }
     };
     if constexpr (kernels::kCacheStencils<S>) {
       stencilOffset_.resize(p_.size());
@@ -355,8 +391,9 @@ void MpmSolver::finishParticlesToGrid() {
   bcs_.mirror(g.mass, Parity::Scalar);
   const std::int64_t n = g.numNodes();
   const int dim = scene_.mesh.dim();
+  const double floor = massFloor_;  // a local: the member was reloaded after every store
   for (std::int64_t k = 0; k < n; ++k) {
-    const double inv = mass[k] > massFloor_ ? 1.0 / mass[k] : 0.0;
+    const double inv = mass[k] > floor ? 1.0 / mass[k] : 0.0;
     for (int d = 0; d < dim; ++d) mom[d][k] *= inv;
   }
   applyBC(g.velocity);
@@ -403,8 +440,33 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
   double cmax = 0;
   kernels::ParticleSums sums;  // the step's last pass (kMove): the ledger's sums, block by block in order
   withStencils([&]<class S, int D>(const kernels::StepStencils<S, D>& src) {
-    forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
+    // 2D / 3D: the grid's velocities packed into gather records first (the nodes the scatter
+    // reached), read as vector lanes by kernels::gridToRecords (the same bits as the scalar
+    // kernel), cleared after for the next scatter.
+    using Slots = kernels::GatherSlots<D, kVelocity, kMove, true, false>;
+    using SlotsFromFirst = kernels::GatherSlots<D, kVelocity, kMove, true, kVelocity || kMove>;
+    const bool fromFirst = (kVelocity || kMove) && vGrad[0] == vL[0];
+    const bool records = D > 1 && (fromFirst ? SlotsFromFirst::kFits : Slots::kFits);
+    double* rec = records ? nodeRecords() : nullptr;
+    const kernels::NodeRange range = recordRangeValid_ ? recordRange_ : kernels::NodeRange{0, grid_->numNodes()};
+    if constexpr (D > 1) {
+      if (records && fromFirst)
+        kernels::packGather<D, kVelocity, kMove, true, kVelocity || kMove>(rec, range, vL, vn, vGrad);
+      else if (records)
+        kernels::packGather<D, kVelocity, kMove, true, false>(rec, range, vL, vn, vGrad);
+    }
+    const auto gather = [&](std::size_t b, std::size_t e) {
+      if constexpr (D > 1 && SlotsFromFirst::kFits)
+        if (records && fromFirst)
+          return kernels::gridToRecords<D, kVelocity, kMove, true, kVelocity || kMove>(src, p_, b, e, geom, rec, dt_,
+                                                                                       flip_);
+      if constexpr (D > 1 && Slots::kFits)
+        if (records && !fromFirst)
+          return kernels::gridToRecords<D, kVelocity, kMove, true, false>(src, p_, b, e, geom, rec, dt_, flip_);
       kernels::gridToParticles<D, kVelocity, kMove, true>(src, p_, b, e, geom, vL, vn, vGrad, dt_, flip_);
+    };
+    forParticleBlocks([&](std::size_t b, std::size_t e, const ConstitutiveModel* model) {
+      gather(b, e);
       updateDeformation(b, e);
       if (!model) {
         if (kMove) sums.add(p_, b, e);
@@ -421,6 +483,8 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
         sums.add(p_, b, e);
       }
     });
+    if (records)
+      kernels::clearRecords(rec, range, fromFirst ? SlotsFromFirst::kStride : Slots::kStride);
   });
   if (kMove) {
     endSums_ = sums;
@@ -431,6 +495,21 @@ void MpmSolver::gridToParticlesAndStress(const double* const vL[3], const double
 }
 
 namespace {
+// One component of the grid update, v_L = v + dt ((f + f_ext) / m - c v) where m > floor, else v,
+// over restrict-qualified arrays so that it vectorizes (lane by lane the same operations). The
+// division is taken on every node (by 1 where m <= floor, whose result is not used): a division
+// under the condition is not if-converted.
+void nodeVelocityUpdate(const double* __restrict__ m, const double* __restrict__ v, const double* __restrict__ f,
+                        const double* __restrict__ fe, double* __restrict__ vl, std::int64_t n, double dt, double c,
+                        double floor) {
+  for (std::int64_t k = 0; k < n; ++k) {
+    const bool moves = m[k] > floor;
+    const double mk = moves ? m[k] : 1.0;
+    const double a = v[k] + dt * ((f[k] + fe[k]) / mk - c * v[k]);
+    vl[k] = moves ? a : v[k];
+  }
+}
+
 // F_n+1 = (I + dt L) F_n and V = V0 det F for 1D / 2D particles over distinct columns (restrict-
 // qualified parameters, which GCC honours where it ignores them on locals: the loop vectorizes,
 // lane by lane the same operations). In 1D L's yx, xy and yy are zero: those terms are left out.
@@ -467,16 +546,30 @@ void planarDeformationUpdate(double* __restrict__ F0c, double* __restrict__ F1c,
 void MpmSolver::updateDeformation(std::size_t begin, std::size_t end) {
   const double dt = dt_;
   if (scene_.mesh.dim() == 3) {
+    // The column pointers in locals and no dependence assumed between particles (ivdep: the
+    // columns are distinct): the loop vectorizes, lane by lane the same operations.
+    double* Fc[9];
+    const double* Lc[9];
+    for (int k = 0; k < 9; ++k) {
+      Fc[k] = p_.F[k].data();
+      Lc[k] = p_.L[k].data();
+    }
+    const double* vol0 = p_.vol0.data();
+    double* vol = p_.vol.data();
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
     for (std::size_t i = begin; i < end; ++i) {
-      double Fn[9];
+      double Fo[9], Fn[9];
+      for (int k = 0; k < 9; ++k) Fo[k] = Fc[k][i];
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) {
-          double s = p_.F[3 * a + b][i];
-          for (int c = 0; c < 3; ++c) s += dt * p_.L[3 * a + c][i] * p_.F[3 * c + b][i];
+          double s = Fo[3 * a + b];
+          for (int c = 0; c < 3; ++c) s += dt * Lc[3 * a + c][i] * Fo[3 * c + b];
           Fn[3 * a + b] = s;
         }
-      for (int k = 0; k < 9; ++k) p_.F[k][i] = Fn[k];
-      p_.vol[i] = p_.vol0[i] * det(Mat3{Fn[0], Fn[1], Fn[2], Fn[3], Fn[4], Fn[5], Fn[6], Fn[7], Fn[8]});
+      for (int k = 0; k < 9; ++k) Fc[k][i] = Fn[k];
+      vol[i] = vol0[i] * det(Mat3{Fn[0], Fn[1], Fn[2], Fn[3], Fn[4], Fn[5], Fn[6], Fn[7], Fn[8]});
     }
     return;
   }
@@ -515,16 +608,11 @@ void MpmSolver::updateGrid() {
   if (comm_.size() > 1) g.fill({&g.externalForce});
   const std::int64_t n = g.numNodes();
   const int dim = scene_.mesh.dim();
-  const double dt = dt_, c = damping_;
+  const double dt = dt_, c = damping_, floor = accelFloor_;
   const double* m = g.mass.data();
-  for (int d = 0; d < dim; ++d) {
-    const double* v = g.velocity.data(d);
-    const double* f = g.force.data(d);
-    const double* fe = g.externalForce.data(d);
-    double* vl = g.velocityL.data(d);
-    for (std::int64_t k = 0; k < n; ++k)
-      vl[k] = m[k] > accelFloor_ ? v[k] + dt * ((f[k] + fe[k]) / m[k] - c * v[k]) : v[k];
-  }
+  for (int d = 0; d < dim; ++d)
+    nodeVelocityUpdate(m, g.velocity.data(d), g.force.data(d), g.externalForce.data(d), g.velocityL.data(d), n, dt,
+                       c, floor);
   applyBC(g.velocityL);
   // The work of the coupling forces, as the update realised it (a constrained component moves
   // neither at n nor at L, so it does none), for the energy ledger below; the coupler books the
@@ -532,18 +620,24 @@ void MpmSolver::updateGrid() {
   // floor) and takes it from the fluid there.
   // The ledger: the nodes' kinetic energy change less the coupling and damping work is the
   // internal forces' (with the walls' constraints), to be met by the particles' stress work.
+  // (The fields' component pointers and the floor in locals: read through the Field objects in
+  // the loop they were reloaded after every store to w.)
   double* w = g.externalWork.data();
+  const double* nwk = nodeWeight_.data();
+  const auto vn = components(g.velocity);
+  const auto vl = components(g.velocityL);
+  const auto fe = components(g.externalForce);
   double wext = 0, wdamp = 0;
   for (std::int64_t k = 0; k < n; ++k) {
     double s = 0, sd = 0;
-    if (m[k] > accelFloor_)
+    if (m[k] > floor)
       for (int d = 0; d < dim; ++d) {
-        const double vbar = 0.5 * (g.velocity.data(d)[k] + g.velocityL.data(d)[k]);
-        s += g.externalForce.data(d)[k] * vbar;
-        sd -= c * m[k] * g.velocity.data(d)[k] * vbar;
+        const double vbar = 0.5 * (vn[d][k] + vl[d][k]);
+        s += fe[d][k] * vbar;
+        sd -= c * m[k] * vn[d][k] * vbar;
       }
     w[k] = dt * s;
-    const double nw = nodeWeight_[static_cast<std::size_t>(k)];
+    const double nw = nwk[k];
     wext += nw * w[k];
     wdamp += nw * dt * sd;
   }
@@ -636,8 +730,20 @@ void MpmSolver::gridToParticles() {
   ledger_.integration += (summed ? endSums_.work : particleWork()) - ledger_.work;
 }
 
+double* MpmSolver::nodeRecords() {
+  if (!records_) {
+    const std::size_t bytes = sizeof(double) * kernels::kRecordDoubles * static_cast<std::size_t>(grid_->numNodes());
+    recordMemory_.reset(std::calloc(bytes + 64, 1));
+    if (!recordMemory_) throw std::bad_alloc();
+    const auto at = reinterpret_cast<std::uintptr_t>(recordMemory_.get());
+    records_ = reinterpret_cast<double*>((at + 63) & ~static_cast<std::uintptr_t>(63));
+  }
+  return records_;
+}
+
 void MpmSolver::endStep() {
   stencilsValid_ = false;
+  recordRangeValid_ = false;
   time_ += dt_;
   ++step_;
   migrateAndSort(scene_.mpm.sort_particles && step_ % sortInterval_ == 0);
@@ -661,7 +767,19 @@ void MpmSolver::migrateAndSort(bool forceSort) {
   // The grid coordinate as the stencils compute it (GridGeom: times 1 / dx), not a division per
   // particle and direction (the division was 4 % of a 2D linear step).
   const GridGeom geom = grid_->geom();
-  for (std::size_t i = 0; i < n; ++i) {
+  // First whether any particle is outside at all, in a loop without early exits that vectorizes
+  // (q >= 0 and q < cells holds exactly for the finite coordinates inside: NaN fails both); the
+  // search for the face below runs only when one is.
+  std::size_t outsideCount = 0;
+  for (int d = 0; d < dim; ++d) {
+    const double* xd = p_.x[d].data();
+    const double o = geom.origin[d], inv = geom.invDx[d], cells = mesh.cells()[d];
+    for (std::size_t i = 0; i < n; ++i) {
+      const double q = (xd[i] - o) * inv;
+      outsideCount += !(q >= 0.0 && q < cells);
+    }
+  }
+  for (std::size_t i = 0; i < n && outsideCount > 0; ++i) {
     int face = -1;  // -1 inside; 0..5 the face crossed; 6 not finite
     for (int d = 0; d < dim && face < 0; ++d) {
       const double q = (p_.x[d][i] - geom.origin[d]) * geom.invDx[d];

@@ -14,6 +14,7 @@
 /// An uncoupled step (advance()) is these phases in order with no external contributions.
 /// Collective calls (all ranks): constructor, stableTimeStep, every phase, energies.
 #include <array>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -277,6 +278,18 @@ class MpmSolver {
   bool signalSpeedValid_ = false;
   // The ledger's particle sums after the step's last particle pass (USL / MUSL), taken in it.
   kernels::ParticleSums endSums_;
+  // Node records of the 2D / 3D scatter and gather (kernels.h, "Node records"): 8 doubles per
+  // node, 64-byte aligned, all zero between passes. Allocated zeroed on first use (calloc: the
+  // pages stay untouched until a particle's stencil reaches them). recordRange_: the nodes the
+  // step's scatter reached (valid until the particles move), which the gather packs.
+  struct FreeDeleter {
+    void operator()(void* q) const { std::free(q); }
+  };
+  std::unique_ptr<void, FreeDeleter> recordMemory_;
+  double* records_ = nullptr;
+  kernels::NodeRange recordRange_;
+  bool recordRangeValid_ = false;
+  double* nodeRecords();
   Ledger ledger_;
   long long removedLastStep_ = 0;
   std::string removalReport_;
