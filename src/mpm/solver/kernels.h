@@ -529,6 +529,20 @@ void particlesToGridWithForces(const Src& src, const ParticleSet& p, std::size_t
   }
 }
 
+/// The end of a particle's gather (gridToParticles, gridToRecords): x += dt vnew, the FLIP/PIC
+/// velocity from vnew and vold, L = lOf(a, b). vnew / vold: arrays or vectors over the directions.
+template <int Dim, bool kVelocity, bool kMove, bool kGradient, class Vec, class LOf>
+inline void writeBackParticle(ParticleSet& p, std::size_t i, const Vec& vnew, const Vec& vold, double dt, double flip,
+                              LOf lOf) {
+  for (int d = 0; d < Dim; ++d) {
+    if constexpr (kMove) p.x[d][i] += dt * vnew[d];
+    if constexpr (kVelocity) p.v[d][i] = flip * (p.v[d][i] + vnew[d] - vold[d]) + (1.0 - flip) * vnew[d];
+  }
+  if constexpr (kGradient)
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) p.L[3 * a + b][i] = lOf(a, b);
+}
+
 /// Grid to particles. kVelocity: FLIP/PIC velocity update from vL (and vn for the FLIP
 /// increment); kMove: x += dt vL; kGradient: L = grad(vGrad).
 template <int Dim, bool kVelocity, bool kMove, bool kGradient, class Src>
@@ -548,14 +562,8 @@ void gridToParticles(const Src& src, ParticleSet& p, std::size_t begin, std::siz
           for (int b = 0; b < Dim; ++b) L[a][b] += vGrad[a][n] * gr[b];
       }
     });
-    for (int d = 0; d < Dim; ++d) {
-      if constexpr (kMove) p.x[d][i] += dt * vnew[d];
-      if constexpr (kVelocity)
-        p.v[d][i] = flip * (p.v[d][i] + vnew[d] - vold[d]) + (1.0 - flip) * vnew[d];
-    }
-    if constexpr (kGradient)
-      for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b) p.L[3 * a + b][i] = L[a][b];
+    writeBackParticle<Dim, kVelocity, kMove, kGradient>(p, i, vnew, vold, dt, flip,
+                                                        [&](int a, int b) { return L[a][b]; });
   }
 }
 
@@ -777,14 +785,8 @@ void gridToRecords(const Src& src, ParticleSet& p, std::size_t begin, std::size_
       Lc[0] = V{L4[0], L4[1]};
       Lc[1] = V{L4[2], L4[3]};
     }
-    for (int d = 0; d < Dim; ++d) {
-      if constexpr (kMove) p.x[d][i] += dt * vnew[d];
-      if constexpr (kVelocity)
-        p.v[d][i] = flip * (p.v[d][i] + vnew[d] - vold[d]) + (1.0 - flip) * vnew[d];
-    }
-    if constexpr (kGradient)
-      for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b) p.L[3 * a + b][i] = Lc[b][a];
+    writeBackParticle<Dim, kVelocity, kMove, kGradient>(p, i, vnew, vold, dt, flip,
+                                                        [&](int a, int b) { return Lc[b][a]; });
   }
 }
 
