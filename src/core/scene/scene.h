@@ -211,6 +211,9 @@ struct IceOptions {
   std::string linear_solver = "pfmg_pcg";  // pfmg_pcg | smg_pcg | cg | bicgstab (semi_implicit)
   double solver_tolerance = 1e-10;
   int solver_max_iterations = 1000;
+  // pfmg_pcg / smg_pcg: the most solves one multigrid set-up serves (its coarse levels lag the
+  // matrix; 1: a fresh hierarchy every step). ice/linear/hypre_struct_pcg.h.
+  int preconditioner_reuse = 20;
   double exchange_momentum = 1e15;         // default K for every pair
   double exchange_heat = 0;                // default H for every pair
   std::vector<ExchangePair> exchange_pairs;  // overrides per pair

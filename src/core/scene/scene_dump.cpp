@@ -264,6 +264,7 @@ void options(std::ostream& o, const Scene& s) {
   o << "ice:\n  advection: " << i.advection << "\n  limiter: " << i.limiter << "\n  pressure_solver: "
     << i.pressure_solver << "\n  linear_solver: " << i.linear_solver << "\n  solver_tolerance: "
     << num(i.solver_tolerance) << "\n  solver_max_iterations: " << i.solver_max_iterations
+    << "\n  preconditioner_reuse: " << i.preconditioner_reuse
     << "\n  pressure_iterations: " << i.max_pressure_iterations << "\n  pressure_tolerance: "
     << num(i.pressure_tolerance) << "\n  shock_viscosity: {linear: " << num(i.shock_viscosity_linear)
     << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  face_pressure: " << i.face_pressure

@@ -589,7 +589,7 @@ class SchemaReader {
   void readIce(const YamlValue& v) {
     const YamlMap m = v.map();
     m.allow({"advection", "limiter", "pressure_solver", "linear_solver", "solver_tolerance",
-             "solver_max_iterations", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
+             "solver_max_iterations", "preconditioner_reuse", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
              "face_pressure", "trace_mass_fraction", "equilibrium", "semi_implicit_sound_fraction"});
     IceOptions& o = s_.ice;
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
@@ -598,6 +598,7 @@ class SchemaReader {
     o.linear_solver = m.choice("linear_solver", o.linear_solver, {"cg", "bicgstab", "pfmg_pcg", "smg_pcg"}, "linear solver");
     o.solver_tolerance = m.number("solver_tolerance", o.solver_tolerance, Range::positive());
     o.solver_max_iterations = static_cast<int>(m.integer("solver_max_iterations", o.solver_max_iterations, 1, kIntMax));
+    o.preconditioner_reuse = static_cast<int>(m.integer("preconditioner_reuse", o.preconditioner_reuse, 1, kIntMax));
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));
     o.pressure_tolerance = m.number("pressure_tolerance", o.pressure_tolerance, Range::positive());
     o.face_pressure = m.choice("face_pressure", o.face_pressure, {"auto", "riemann", "average"}, "face pressure");

@@ -31,6 +31,13 @@ struct HypreStructPcg::Objects {
   HYPRE_StructVector b = nullptr, x = nullptr;
   std::vector<double> values, rhs, sol;
   HYPRE_Int lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
+  // The PCG and its multigrid hierarchy, kept between solves (hypre_struct_pcg.h, the lagged
+  // hierarchy), with the matrix they were set up from and the counters of the reuse rule.
+  HYPRE_StructSolver pcg = nullptr, mg = nullptr;
+  StructPreconditioner mgKind = StructPreconditioner::Pfmg;
+  std::vector<double> setupValues;
+  int since = 0, firstIts = 0;
+  bool rebuild = false;
 
   Objects(MPI_Comm comm, const core::Box& ownedBox, const StencilBoundary& bc, int dimension)
       : owned(ownedBox), domain(bc.domain), dim(dimension), hdim(std::max(dimension, 2)), periodic(bc.periodic) {
@@ -67,6 +74,7 @@ struct HypreStructPcg::Objects {
     sol.resize(n);
   }
   ~Objects() {
+    destroySolver();
     if (x) HYPRE_StructVectorDestroy(x);
     if (b) HYPRE_StructVectorDestroy(b);
     if (A) HYPRE_StructMatrixDestroy(A);
@@ -75,10 +83,74 @@ struct HypreStructPcg::Objects {
   }
   Objects(const Objects&) = delete;
   Objects& operator=(const Objects&) = delete;
+
+  int entries() const { return 2 * hdim + 1; }
+  /// Writes a matrix (values in hypre's order) into A and assembles it.
+  void setMatrix(const double* v) {
+    HYPRE_Int e[7] = {0, 1, 2, 3, 4, 5, 6};
+    if (owned.ok()) check(HYPRE_StructMatrixSetBoxValues(A, lower, upper, entries(), e, const_cast<double*>(v)), "StructMatrixSetBoxValues");
+    check(HYPRE_StructMatrixAssemble(A), "StructMatrixAssemble");
+  }
+  void destroySolver() {
+    if (pcg) HYPRE_StructPCGDestroy(pcg);
+    if (mg) {
+      if (mgKind == StructPreconditioner::Pfmg) HYPRE_StructPFMGDestroy(mg);
+      else HYPRE_StructSMGDestroy(mg);
+    }
+    pcg = mg = nullptr;
+  }
+  /// A fresh PCG and multigrid hierarchy from A as it stands (collective); the counters restart.
+  void build(MPI_Comm comm, StructPreconditioner kind, const double* v) {
+    destroySolver();
+    mgKind = kind;
+    check(HYPRE_StructPCGCreate(comm, &pcg), "StructPCGCreate");
+    HYPRE_StructPCGSetTwoNorm(pcg, 1);
+    HYPRE_StructPCGSetRelChange(pcg, 0);
+    HYPRE_StructPCGSetLogging(pcg, 0);
+    HYPRE_StructPCGSetPrintLevel(pcg, 0);
+    if (kind == StructPreconditioner::Pfmg) {
+      check(HYPRE_StructPFMGCreate(comm, &mg), "StructPFMGCreate");
+      HYPRE_StructPFMGSetMaxIter(mg, 1);
+      HYPRE_StructPFMGSetTol(mg, 0.0);
+      HYPRE_StructPFMGSetZeroGuess(mg);
+      HYPRE_StructPFMGSetRAPType(mg, 0);    // Galerkin coarse operators (the jumps)
+      HYPRE_StructPFMGSetRelaxType(mg, 2);  // red-black Gauss-Seidel, symmetric
+      HYPRE_StructPFMGSetNumPreRelax(mg, 1);
+      HYPRE_StructPFMGSetNumPostRelax(mg, 1);
+      HYPRE_StructPCGSetPrecond(pcg, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, mg);
+    } else {
+      check(HYPRE_StructSMGCreate(comm, &mg), "StructSMGCreate");
+      HYPRE_StructSMGSetMemoryUse(mg, 0);
+      HYPRE_StructSMGSetMaxIter(mg, 1);
+      HYPRE_StructSMGSetTol(mg, 0.0);
+      HYPRE_StructSMGSetZeroGuess(mg);
+      HYPRE_StructSMGSetNumPreRelax(mg, 1);
+      HYPRE_StructSMGSetNumPostRelax(mg, 1);
+      HYPRE_StructPCGSetPrecond(pcg, HYPRE_StructSMGSolve, HYPRE_StructSMGSetup, mg);
+    }
+    check(HYPRE_StructPCGSetup(pcg, A, b, x), "StructPCGSetup");
+    setupValues.assign(v, v + values.size());
+    since = 0;
+    firstIts = 0;
+    rebuild = false;
+  }
+  /// One PCG solve of the system as set (x its initial guess): iterations, final relative residual.
+  std::pair<int, double> run(double tol, int maxIterations) {
+    HYPRE_StructPCGSetMaxIter(pcg, maxIterations);
+    HYPRE_StructPCGSetTol(pcg, tol);
+    HYPRE_StructPCGSolve(pcg, A, b, x);  // not converging is an error code, read by the caller
+    HYPRE_ClearAllErrors();
+    HYPRE_Int its = 0;
+    double rel = 0;
+    HYPRE_StructPCGGetNumIterations(pcg, &its);
+    HYPRE_StructPCGGetFinalRelativeResidualNorm(pcg, &rel);
+    if (since++ == 0) firstIts = static_cast<int>(its);
+    return {static_cast<int>(its), rel};
+  }
 };
 
-HypreStructPcg::HypreStructPcg(const core::Comm& comm, StructPreconditioner preconditioner)
-    : comm_(comm), pre_(preconditioner) {}
+HypreStructPcg::HypreStructPcg(const core::Comm& comm, StructPreconditioner preconditioner, int reuse)
+    : comm_(comm), pre_(preconditioner), reuse_(std::max(reuse, 1)) {}
 
 HypreStructPcg::~HypreStructPcg() = default;
 
@@ -105,61 +177,60 @@ LinearResult HypreStructPcg::solve(const FaceStencil& A, const StencilBoundary& 
     res.converged = true;
     return res;
   }
-  HYPRE_Int entries[7] = {0, 1, 2, 3, 4, 5, 6};
   if (A.owned.ok()) {
-    check(HYPRE_StructMatrixSetBoxValues(H.A, H.lower, H.upper, ne, entries, H.values.data()), "StructMatrixSetBoxValues");
     check(HYPRE_StructVectorSetBoxValues(H.b, H.lower, H.upper, H.rhs.data()), "StructVectorSetBoxValues");
     check(HYPRE_StructVectorSetBoxValues(H.x, H.lower, H.upper, H.sol.data()), "StructVectorSetBoxValues");
   }
-  check(HYPRE_StructMatrixAssemble(H.A), "StructMatrixAssemble");
   check(HYPRE_StructVectorAssemble(H.b), "StructVectorAssemble");
   check(HYPRE_StructVectorAssemble(H.x), "StructVectorAssemble");
-
-  HYPRE_StructSolver pcg = nullptr, mg = nullptr;
-  check(HYPRE_StructPCGCreate(comm_.raw(), &pcg), "StructPCGCreate");
-  HYPRE_StructPCGSetMaxIter(pcg, maxIterations);
-  HYPRE_StructPCGSetTol(pcg, tol);
-  HYPRE_StructPCGSetTwoNorm(pcg, 1);
-  HYPRE_StructPCGSetRelChange(pcg, 0);
-  HYPRE_StructPCGSetLogging(pcg, 0);
-  HYPRE_StructPCGSetPrintLevel(pcg, 0);
-  if (pre_ == StructPreconditioner::Pfmg) {
-    check(HYPRE_StructPFMGCreate(comm_.raw(), &mg), "StructPFMGCreate");
-    HYPRE_StructPFMGSetMaxIter(mg, 1);
-    HYPRE_StructPFMGSetTol(mg, 0.0);
-    HYPRE_StructPFMGSetZeroGuess(mg);
-    HYPRE_StructPFMGSetRAPType(mg, 0);    // Galerkin coarse operators (the jumps)
-    HYPRE_StructPFMGSetRelaxType(mg, 2);  // red-black Gauss-Seidel, symmetric
-    HYPRE_StructPFMGSetNumPreRelax(mg, 1);
-    HYPRE_StructPFMGSetNumPostRelax(mg, 1);
-    HYPRE_StructPCGSetPrecond(pcg, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, mg);
-  } else {
-    check(HYPRE_StructSMGCreate(comm_.raw(), &mg), "StructSMGCreate");
-    HYPRE_StructSMGSetMemoryUse(mg, 0);
-    HYPRE_StructSMGSetMaxIter(mg, 1);
-    HYPRE_StructSMGSetTol(mg, 0.0);
-    HYPRE_StructSMGSetZeroGuess(mg);
-    HYPRE_StructSMGSetNumPreRelax(mg, 1);
-    HYPRE_StructSMGSetNumPostRelax(mg, 1);
-    HYPRE_StructPCGSetPrecond(pcg, HYPRE_StructSMGSolve, HYPRE_StructSMGSetup, mg);
+  if (!pending_.empty()) {  // a restart: the hierarchy the interrupted run was using
+    const std::size_t want = 3 + H.values.size();
+    if (pending_.size() != want)
+      throw std::runtime_error("ice: the restart checkpoint's pressure solver set-up holds " +
+                               std::to_string(pending_.size()) + " values on this rank, expected " +
+                               std::to_string(want) + " (written with another decomposition?)");
+    H.setMatrix(pending_.data() + 3);
+    H.build(comm_.raw(), pre_, pending_.data() + 3);
+    ++setups_;
+    H.since = static_cast<int>(pending_[0]);
+    H.firstIts = static_cast<int>(pending_[1]);
+    H.rebuild = pending_[2] != 0;
+    pending_.clear();
   }
-  check(HYPRE_StructPCGSetup(pcg, H.A, H.b, H.x), "StructPCGSetup");
-  HYPRE_StructPCGSolve(pcg, H.A, H.b, H.x);  // not converging is an error code, read below
-  HYPRE_ClearAllErrors();
-  HYPRE_Int its = 0;
-  double rel = 0;
-  HYPRE_StructPCGGetNumIterations(pcg, &its);
-  HYPRE_StructPCGGetFinalRelativeResidualNorm(pcg, &rel);
-  HYPRE_StructPCGDestroy(pcg);
-  if (pre_ == StructPreconditioner::Pfmg) HYPRE_StructPFMGDestroy(mg);
-  else HYPRE_StructSMGDestroy(mg);
+  H.setMatrix(H.values.data());
+  const bool fresh = !H.pcg || H.since >= reuse_ || H.rebuild;
+  if (fresh) {
+    H.build(comm_.raw(), pre_, H.values.data());
+    ++setups_;
+  }
+  auto [its, rel] = H.run(tol, maxIterations);
+  if (!fresh && !(std::isfinite(rel) && rel <= tol)) {  // the lagged hierarchy failed: once more, fresh
+    if (A.owned.ok()) check(HYPRE_StructVectorSetBoxValues(H.x, H.lower, H.upper, H.sol.data()), "StructVectorSetBoxValues");
+    check(HYPRE_StructVectorAssemble(H.x), "StructVectorAssemble");
+    H.build(comm_.raw(), pre_, H.values.data());
+    ++setups_;
+    const auto [its2, rel2] = H.run(tol, maxIterations);
+    its += its2;
+    rel = rel2;
+  } else if (!fresh && its > 2 * H.firstIts + 2) {
+    H.rebuild = true;  // the coarse levels no longer fit: a fresh hierarchy next solve
+  }
 
-  res.iterations = static_cast<int>(its);
+  res.iterations = its;
   res.error = rel;
   res.converged = std::isfinite(rel) && rel <= tol;
   if (A.owned.ok()) check(HYPRE_StructVectorGetBoxValues(H.x, H.lower, H.upper, H.sol.data()), "StructVectorGetBoxValues");
   core::forEach(A.owned, [&](int i, int j, int k) { x(i, j, k) = H.sol[static_cast<std::size_t>(A.owned.index(i, j, k))]; });
   return res;
 }
+
+std::vector<double> HypreStructPcg::setupState() const {
+  if (!h_ || !h_->pcg) return pending_;
+  std::vector<double> s{static_cast<double>(h_->since), static_cast<double>(h_->firstIts), h_->rebuild ? 1.0 : 0.0};
+  s.insert(s.end(), h_->setupValues.begin(), h_->setupValues.end());
+  return s;
+}
+
+void HypreStructPcg::restoreSetupState(std::vector<double> state) { pending_ = std::move(state); }
 
 }  // namespace mpmice::ice::linear

@@ -13,12 +13,24 @@
 /// iterations on the flap); b = 0 gives x = 0 at once.
 ///
 /// The grid, stencil, matrix and vectors are built once (the first solve) and reused while the
-/// owned box stays; each solve sets the values and rebuilds the PCG and its multigrid hierarchy
-/// (hypre's PFMG/SMG set-up builds the coarse operators from the matrix values and cannot be
-/// re-run on an existing solver object). PFMG (Galerkin coarse operators, red-black Gauss-Seidel)
-/// is the default; SMG (plane smoothing, costlier per cycle) is the fallback where PFMG's
-/// pointwise smoother struggles with anisotropy or jumps.
+/// owned box stays. PFMG (Galerkin coarse operators, red-black Gauss-Seidel) is the default; SMG
+/// (plane smoothing, costlier per cycle) is the fallback where PFMG's pointwise smoother struggles
+/// with anisotropy or jumps.
+///
+/// The lagged hierarchy: hypre's PFMG / SMG set-up (coarse grids, their communication, the
+/// Galerkin coarse operators) costs several V-cycles and cannot be re-run on an existing solver
+/// object, so it is built from one solve's matrix and kept for at most `reuse` solves (the key
+/// ice.preconditioner_reuse). Each solve writes its own matrix into hypre's: PCG's products and
+/// the fine-level smoothing use the current operator, the coarse levels lag. The preconditioner
+/// stays symmetric positive definite (symmetric smoothing, Galerkin coarse operators of an SPD
+/// matrix), so PCG still stops at |r| <= tol |b| of the current system; only its iteration count
+/// can grow. It is rebuilt at once when a solve takes more than twice the iterations of the first
+/// solve after the set-up, plus 2, and a solve that fails to converge with the lagged hierarchy is
+/// repeated with a fresh one before it is reported. The restart checkpoint keeps the set-up's
+/// matrix and counters (setupState / restoreSetupState), so a resumed run rebuilds the same
+/// hierarchy and continues bit for bit.
 #include <memory>
+#include <vector>
 
 #include "core/parallel/comm.h"
 #include "ice/linear/assembled_rows.h"
@@ -29,7 +41,8 @@ enum class StructPreconditioner { Pfmg, Smg };
 
 class HypreStructPcg {
  public:
-  HypreStructPcg(const core::Comm& comm, StructPreconditioner preconditioner);
+  /// reuse >= 1: the most solves one multigrid set-up serves (1: a fresh hierarchy every solve).
+  HypreStructPcg(const core::Comm& comm, StructPreconditioner preconditioner, int reuse = 1);
   ~HypreStructPcg();
   HypreStructPcg(const HypreStructPcg&) = delete;
   HypreStructPcg& operator=(const HypreStructPcg&) = delete;
@@ -40,10 +53,21 @@ class HypreStructPcg {
   LinearResult solve(const FaceStencil& A, const StencilBoundary& bc, const core::Field& b, core::Field& x,
                      double tol, int maxIterations);
 
+  /// The lagged hierarchy's restart state on this rank: {solves since the set-up, iterations of
+  /// the first of them, rebuild-next flag, then the set-up's matrix values}; empty before the
+  /// first set-up. restoreSetupState gives it back (the next solve first rebuilds the hierarchy
+  /// from those values). Set-ups served since the start: setups().
+  [[nodiscard]] std::vector<double> setupState() const;
+  void restoreSetupState(std::vector<double> state);
+  [[nodiscard]] long setups() const { return setups_; }
+
  private:
   struct Objects;  // hypre's handles (kept out of this header)
   core::Comm comm_;
   StructPreconditioner pre_;
+  int reuse_;
+  long setups_ = 0;
+  std::vector<double> pending_;  // a restored setupState, applied by the next solve
   std::unique_ptr<Objects> h_;
 };
 

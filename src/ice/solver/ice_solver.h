@@ -150,6 +150,8 @@ class IceSolver {
   /// and their sum over every step so far; the same on every rank.
   [[nodiscard]] int linearIterations() const { return linIters_; }
   [[nodiscard]] long linearIterationsTotal() const { return linItersTotal_; }
+  /// Multigrid set-ups of hypre's pressure solver so far (pfmg_pcg, smg_pcg; 0 otherwise).
+  [[nodiscard]] long preconditionerSetups() const;
   [[nodiscard]] bool semiImplicit() const { return semiImplicit_; }
   /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
   [[nodiscard]] long energyFallbacks() const { return fallbacks_; }
@@ -222,7 +224,9 @@ class IceSolver {
   /// velocity's Riemann response and their time-step rate at its faces (docs/ice.md, method step 6).
   [[nodiscard]] bool riemannFacePressureOn() const { return riemannFacePressure_; }
   double cfl_ = 0.4, tEnd_ = 0, dtMax_ = 1e30, dtMin_ = 0, solverTol_ = 1e-10;
-  int solverMaxIt_ = 1000;
+  int solverMaxIt_ = 1000, preconditionerReuse_ = 20;
+  /// hypre's structured PCG (pfmg_pcg, smg_pcg), made on first use.
+  linear::HypreStructPcg& structSolver();
   core::RealVect gravity_{0, 0, 0};
   bool anyGravity_ = false;
   struct Source {

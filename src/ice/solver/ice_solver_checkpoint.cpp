@@ -58,6 +58,10 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   data.put(prefix + ".clock", std::vector<double>{t_, static_cast<double>(nsteps_), dt_, collapse_.first(),
                                                   static_cast<double>(fallbacks_), static_cast<double>(linIters_),
                                                   static_cast<double>(linItersTotal_), audit_.created, audit_.energy});
+  // The pressure solver's multigrid set-up (its matrix and reuse counters): a resumed run rebuilds
+  // the hierarchy the interrupted one was using, so it continues bit for bit.
+  if (semi_.hypre)
+    if (std::vector<double> s = semi_.hypre->setupState(); !s.empty()) data.put(prefix + ".pressure_solver_setup", std::move(s));
 }
 
 void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
@@ -88,6 +92,9 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
   linIters_ = static_cast<int>(c[5]);
   linItersTotal_ = static_cast<long>(c[6]);
   if (c.size() == 9) audit_.created = c[7], audit_.energy = c[8];
+  const bool structured = linearSolver_ == LinearSolver::PfmgPcg || linearSolver_ == LinearSolver::SmgPcg;
+  if (semiImplicit_ && structured && data.has(prefix + ".pressure_solver_setup"))
+    structSolver().restoreSetupState(data.get(prefix + ".pressure_solver_setup"));
 }
 
 }  // namespace mpmice::ice

@@ -52,6 +52,7 @@ void IceSolver::initialize(const core::Scene& scene) {
     throw std::invalid_argument("ice.linear_solver: bicgstab (Eigen, assembled) runs on one rank; use cg in parallel");
   solverTol_ = o.solver_tolerance;
   solverMaxIt_ = o.solver_max_iterations;
+  preconditionerReuse_ = o.preconditioner_reuse;
   cfl_ = scene.time.cfl;
   tEnd_ = scene.time.end;
   dtMax_ = scene.time.dt_max;

@@ -13,6 +13,7 @@
 // power * theta * V * dt to their material.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
@@ -34,7 +35,8 @@ void IceSolver::computeSourcesAndLagrangian() {
     double *uL[3], *eL, *vL;
     double cv;
     bool external;
-    MaterialState* state;
+    const double* work;  // an external material's coupling work, owned cells (index oc below)
+    double* dEn;         // its exchange energy, owned cells
     const Eos* eos;
     bool cold;  // the EOS has a cold energy (e - e_cold is the thermal energy the fix guards)
   };
@@ -52,7 +54,8 @@ void IceSolver::computeSourcesAndLagrangian() {
     const auto u = core::components(m.vel);
     const auto uL = core::components(m.lagVel());
     ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(), {u[0], u[1], u[2]}, m.eint.data(),
-              {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.spvolL.data(), m.eos->cv(), m.external, &m, m.eos.get(),
+              {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.spvolL.data(), m.eos->cv(), m.external,
+              m.external ? m.couplingWork.data() : nullptr, m.external ? m.dEnergy.data() : nullptr, m.eos.get(),
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
@@ -70,10 +73,11 @@ void IceSolver::computeSourcesAndLagrangian() {
     fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
     dxs[d] = mesh_.dx(d);
   }
-  // One owned cell (i, j, k): stored index c, fls[d] the index of its low face normal to d. NM > 0:
+  // One owned cell: stored index c, oc its index in the owned box (an external material's coupling
+  // work and exchange energy), fls[d] the index of its low face normal to d. NM > 0:
   // the number of materials fixed at compile time (the small loops unroll; the same operations in
   // the same order).
-  auto cell = [&]<int NM>(int i, int j, int k, std::int64_t c, const std::int64_t* fls) {
+  auto cell = [&]<int NM>(std::int64_t c, std::int64_t oc, const std::int64_t* fls) {
     const int n = NM > 0 ? NM : nm;
     double kbar = 0, thetaCav = 0;
     for (int r = 0; r < n; ++r) kbar += ptr[r].th[c] * ptr[r].ka[c];
@@ -125,7 +129,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       P.eL[c] = P.e[c] + de;
       P.vL[c] = v * (1.0 + dvv);
       if (P.external) {  // its energy change is its own solver's: the work the forces did on it
-        dWork += P.state->couplingWork(i, j, k);
+        dWork += P.work[oc];
         continue;
       }
       dKE += 0.5 * mass * (ke1 - ke0);
@@ -152,7 +156,7 @@ void IceSolver::computeSourcesAndLagrangian() {
         if (P.external) {
           if (P.m[c] > 0) {
             P.eL[c] += share / P.m[c];
-            P.state->dEnergy(i, j, k) += share;
+            P.dEn[oc] += share;
           }
           continue;
         }
@@ -178,10 +182,10 @@ void IceSolver::computeSourcesAndLagrangian() {
     for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
       for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
         const int i0 = owned_.lo[0];
-        std::int64_t c = sb.index(i0, j, k), fls[3] = {0, 0, 0};
+        std::int64_t c = sb.index(i0, j, k), oc = owned_.index(i0, j, k), fls[3] = {0, 0, 0};
         for (int d = 0; d < dim; ++d) fls[d] = fbs[d].index(i0, j, k);
-        for (int i = i0; i <= owned_.hi[0]; ++i, ++c) {
-          cell.template operator()<NM>(i, j, k, c, fls);
+        for (int i = i0; i <= owned_.hi[0]; ++i, ++c, ++oc) {
+          cell.template operator()<NM>(c, oc, fls);
           for (int d = 0; d < dim; ++d) ++fls[d];
         }
       }
@@ -191,33 +195,46 @@ void IceSolver::computeSourcesAndLagrangian() {
   else sweep.template operator()<0>();
 
   if (anyViscous_ || anyConduction_) {
+    // Flat indices by rows (every cell field shares the state's box): a neighbour along d is
+    // c -+ stride[d]. Each cell writes only itself and reads the start values: any order does.
+    const std::int64_t stride[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
+    double dx2[3] = {1, 1, 1};
+    for (int d = 0; d < dim; ++d) dx2[d] = mesh_.dx(d) * mesh_.dx(d);
     for (MaterialState& m : st_.mat) {
       if (m.external || (m.viscosity <= 0 && m.conductivity <= 0)) continue;
-      forEach(owned_, [&](int i, int j, int k) {
-        const double tc = m.theta(i, j, k);
-        if (!(tc > 0)) return;
-        const double v = m.spvol(i, j, k);
-        const double Tc = m.conductivity > 0 ? m.eos->temperature(1.0 / v, m.eintStart(i, j, k)) : 0.0;
-        double du[3] = {0, 0, 0}, dT = 0;
-        for (int d = 0; d < dim; ++d)
-          for (int sgn = -1; sgn <= 1; sgn += 2) {
-            int n[3] = {i, j, k};
-            n[d] += sgn;
-            // The face's share of the material is the smaller of its cells' (not their mean): a
-            // trace beside a full cell then diffuses at most at nu, so the explicit viscous bound
-            // dt <= dx^2 / (2 dim nu) holds in every cell (with the mean, a trace of theta got
-            // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
-            const double tb = std::min(tc, m.theta(n[0], n[1], n[2])) / tc / (mesh_.dx(d) * mesh_.dx(d));
-            if (m.viscosity > 0)
-              for (int q = 0; q < dim; ++q) du[q] += tb * (m.velStart(n[0], n[1], n[2], q) - m.velStart(i, j, k, q));
-            if (m.conductivity > 0) {
-              const double vn = m.spvol(n[0], n[1], n[2]);
-              dT += tb * (m.eos->temperature(1.0 / vn, m.eintStart(n[0], n[1], n[2])) - Tc);
-            }
+      const bool visc = m.viscosity > 0, cond = m.conductivity > 0;
+      const double* th = m.theta.data();
+      const double* sv = m.spvol.data();
+      const double* es = cond ? m.eintStart.data() : nullptr;
+      const auto us = visc ? core::components(std::as_const(m.velStart)) : std::array<const double*, 3>{};
+      const auto u = core::components(m.vel);
+      double* e = m.eint.data();
+      const Eos& eos = *m.eos;
+      for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+        for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+          std::int64_t c = sb.index(owned_.lo[0], j, k);
+          for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i, ++c) {
+            const double tc = th[c];
+            if (!(tc > 0)) continue;
+            const double v = sv[c];
+            const double Tc = cond ? eos.temperature(1.0 / v, es[c]) : 0.0;
+            double du[3] = {0, 0, 0}, dT = 0;
+            for (int d = 0; d < dim; ++d)
+              for (int sgn = -1; sgn <= 1; sgn += 2) {
+                const std::int64_t n = c + sgn * stride[d];
+                // The face's share of the material is the smaller of its cells' (not their mean): a
+                // trace beside a full cell then diffuses at most at nu, so the explicit viscous bound
+                // dt <= dx^2 / (2 dim nu) holds in every cell (with the mean, a trace of theta got
+                // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
+                const double tb = std::min(tc, th[n]) / tc / dx2[d];
+                if (visc)
+                  for (int q = 0; q < dim; ++q) du[q] += tb * (us[q][n] - us[q][c]);
+                if (cond) dT += tb * (eos.temperature(1.0 / sv[n], es[n]) - Tc);
+              }
+            for (int q = 0; q < dim; ++q) u[q][c] += dt_ * m.viscosity * v * du[q];
+            e[c] += dt_ * m.conductivity * v * dT;
           }
-        for (int q = 0; q < dim; ++q) m.vel(i, j, k, q) += dt_ * m.viscosity * v * du[q];
-        m.eint(i, j, k) += dt_ * m.conductivity * v * dT;
-      });
+        }
     }
   }
 

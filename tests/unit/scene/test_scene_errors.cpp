@@ -66,6 +66,8 @@ std::vector<BadScene> badScenes() {
        {"test.yaml:7:", "ice.shock_viscosity.linear: -1 is out of range"}},
       {"semi-implicit sound fraction zero", kBase + "ice: {semi_implicit_sound_fraction: 0}\n",
        {"test.yaml:7:", "ice.semi_implicit_sound_fraction: 0 is out of range; expected a number in (0, 1]"}},
+      {"preconditioner reuse zero", kBase + "ice: {preconditioner_reuse: 0}\n",
+       {"test.yaml:7:", "ice.preconditioner_reuse: 0 is out of range; expected an integer >= 1"}},
       {"unknown shock viscosity key", kBase + "ice: {shock_viscosity: {quadratik: 1}}\n",
        {"test.yaml:7:", "unknown key 'quadratik'", "quadratic"}},
       {"CFL above one", kMesh + "time: {end: 1, cfl: 1.5}\n" + kAir + kRegion,
