@@ -21,6 +21,12 @@ inline constexpr double kReferenceTemperature = 300.0;
 /// (gamma + 1) / 2 of an ideal gas with gamma = 1.4 (the strong-shock limit of its Hugoniot).
 /// Pinned by IceShockDefaults.* (the overshoot bounds) and IceSod.* (the L1 bounds).
 inline constexpr double kShockImpedanceSlope = 1.2;
+/// ice.face_pressure: riemann_low_mach: the face's acoustic strain |p_R - p_L| / (rho c^2) (the
+/// relative density jump of an acoustic wave) at which the Riemann terms act in full (lowMachScale
+/// in face_phase.cpp). Measured between the coupled tests' needs (4 Dec 2026): the shock slab's
+/// reflected plateau rings at up to 0.05 (damped in full from it), the flap's Mach 0.03 flow makes
+/// 4e-4; 0.01 and 0.003 gave the same results on the added-mass, flap and slab tests.
+inline constexpr double kRiemannFullStrain = 0.01;
 
 // ---- regularisation: traces, caps and cut-offs
 /// Volume fraction of each fluid left in the cells a solid object of the scene covers at the

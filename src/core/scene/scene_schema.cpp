@@ -601,7 +601,8 @@ class SchemaReader {
     o.preconditioner_reuse = static_cast<int>(m.integer("preconditioner_reuse", o.preconditioner_reuse, 1, kIntMax));
     o.max_pressure_iterations = static_cast<int>(m.integer("pressure_iterations", o.max_pressure_iterations, 1, kIntMax));
     o.pressure_tolerance = m.number("pressure_tolerance", o.pressure_tolerance, Range::positive());
-    o.face_pressure = m.choice("face_pressure", o.face_pressure, {"auto", "riemann", "average"}, "face pressure");
+    o.face_pressure =
+        m.choice("face_pressure", o.face_pressure, {"auto", "riemann", "riemann_low_mach", "average"}, "face pressure");
     o.trace_mass_fraction = m.number("trace_mass_fraction", o.trace_mass_fraction, Range::closed(0, 0.01));
     o.equilibrium = m.choice("equilibrium", o.equilibrium, {"fixed_energy", "with_work"}, "equilibrium pressure energies");
     o.semi_implicit_sound_fraction =

@@ -42,6 +42,26 @@ double shockViscosity(const IceState& st, const int* l, int i, int j, int k, int
   const double rho = 2.0 * dL * dR / (dL + dR);
   return rho * (q1 * c * -du + q2 * du * du);
 }
+// The low-Mach scale of the Riemann terms at the face between cells l and r of x
+// (ice.face_pressure: riemann_low_mach): min(1, max(M, s / kRiemannFullStrain)), M the larger of
+// the two cells' speeds over the smaller sound speed (c = Z / rho), s the face's acoustic strain
+// |p_R - p_L| / (rho c^2) (the smaller rho c^2 of the two). The dissipation W_L W_R / (W_L + W_R) du
+// is a velocity-jump term in the pressure, O(1 / M) too large against the pressure variations of a
+// low-Mach flow (the upwind schemes' low-Mach problem, Guillard & Viozat 1999; M is Rieper's LM-Roe
+// scaling, 2011), and it damps small acoustic waves (the added-mass column's ringing) as if they
+// were shocks. M alone let the noise behind a shock that reflects into gas at rest ring (the shock
+// slab's reflected plateau, where M ~ 0): the strain term keeps the full dissipation wherever
+// neighbouring cells differ by a nonlinear jump.
+double lowMachScale(const CellMixes& x, std::size_t l, std::size_t r) {
+  double ul = 0, ur = 0;
+  for (const std::vector<double>& u : x.u)
+    if (!u.empty()) ul += u[l] * u[l], ur += u[r] * u[r];
+  const double cl = x.z[l] / x.rho[l], cr = x.z[r] / x.rho[r];
+  const double mach = std::sqrt(std::max(ul, ur)) / std::min(cl, cr);
+  const double strain = std::abs(x.p[r] - x.p[l]) / std::min(x.z[l] * cl, x.z[r] * cr);
+  const double m = std::max(mach, strain / kRiemannFullStrain);
+  return m < 1.0 ? m : 1.0;
+}
 // The two-shock approximate Riemann solution's dissipative part (Dukowicz 1985) at a face in
 // compression (du = u_R - u_L < 0): p* = p_avg - W_L W_R / (W_L + W_R) du with the shock
 // impedances W = rho (c + Gamma |du|), Gamma = (gamma + 1) / 2 of an ideal gas of gamma 1.4
@@ -51,7 +71,7 @@ double riemannDissipation(const CellMixes& x, std::int64_t L, std::int64_t R, in
   const std::vector<double>& u = x.u[static_cast<std::size_t>(d)];
   const auto l = static_cast<std::size_t>(L), r = static_cast<std::size_t>(R);
   const double du = u[r] - u[l];
-  return -riemannImpedance(x.z[l], x.rho[l], x.z[r], x.rho[r], du) * du;
+  return -riemannImpedance(x.z[l], x.rho[l], x.z[r], x.rho[r], du, x.lowMach ? lowMachScale(x, l, r) : 1.0) * du;
 }
 // The same two-shock solution's face velocity, u* = (W_L u_L + W_R u_R - (p_R - p_L)) / (W_L + W_R),
 // responds to the pressure jump with 1 / (W_L + W_R) [m^2 s / kg], whatever the time step. At a
@@ -62,7 +82,7 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
   const double du = u[r] - u[l];
   if (!(du < 0) || !(x.z[l] > 0 && x.z[r] > 0)) return 0.0;
   const double wL = x.z[l] - kShockImpedanceSlope * x.rho[l] * du, wR = x.z[r] - kShockImpedanceSlope * x.rho[r] * du;
-  return 1.0 / (wL + wR);
+  return (x.lowMach ? lowMachScale(x, l, r) : 1.0) / (wL + wR);
 }
 
 // The acoustic impedance rho c = 1 / sqrt(v kappa) of material m in stored cell c; 0 where it is
@@ -113,6 +133,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
   const auto n = static_cast<std::size_t>(box.numPts());
   x.rho.resize(n);
   x.z.resize(n);
+  x.p.resize(n);
   for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
   const core::Box& sb = st.press.box();
   const int nm = static_cast<int>(st.mat.size());
@@ -147,6 +168,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
       if (t > 0) dn += t / m.sv[c], kap += t * m.ka[c];
     }
     x.rho[o] = dn;
+    x.p[o] = st.press.data()[c];
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
   };
@@ -324,10 +346,10 @@ void IceSolver::computeFaceVelocities() {
 }
 
 
-double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du) {
+double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du, double scale) {
   if (!(du < 0) || !(zL > 0 && zR > 0)) return 0.0;
   const double wL = zL - kShockImpedanceSlope * rhoL * du, wR = zR - kShockImpedanceSlope * rhoR * du;
-  return wL * wR / (wL + wR);
+  return scale * wL * wR / (wL + wR);
 }
 
 double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
@@ -353,8 +375,9 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
     for (int d = 0; d < dim; ++d) {
       const std::vector<double>& u = x.u[static_cast<std::size_t>(d)];
       const auto L = static_cast<std::size_t>(c - strides[d]), R = static_cast<std::size_t>(c + strides[d]);
-      s += (riemannImpedance(x.z[L], x.rho[L], x.z[C], x.rho[C], u[C] - u[L]) +
-            riemannImpedance(x.z[C], x.rho[C], x.z[R], x.rho[R], u[R] - u[C])) /
+      const double sL = x.lowMach ? lowMachScale(x, L, C) : 1.0, sR = x.lowMach ? lowMachScale(x, C, R) : 1.0;
+      s += (riemannImpedance(x.z[L], x.rho[L], x.z[C], x.rho[C], u[C] - u[L], sL) +
+            riemannImpedance(x.z[C], x.rho[C], x.z[R], x.rho[R], u[R] - u[C], sR)) /
            mesh.dx(d);
     }
     const double rho = dim > 0 ? x.rho[C] : 0.0;
@@ -425,6 +448,7 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
 // The impedances need kappa in the ghost cells: the equilibrium fills them with the other fields'
 // (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
 const CellMixes& IceSolver::cellMixes() const {
+  mixes_.lowMach = riemannLowMach_;
   if (!mixesValid_) computeCellMixes(st_, owned_, mesh_.dim(), mixes_);
   mixesValid_ = true;
   return mixes_;

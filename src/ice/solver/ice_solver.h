@@ -218,6 +218,7 @@ class IceSolver {
   int limiter_ = 1;
   double q1_ = 0, q2_ = 0;  // shock viscosity (linear, quadratic)
   bool riemannFacePressure_ = true;  // ice.face_pressure: riemann, or auto without external materials
+  bool riemannLowMach_ = false;      // ice.face_pressure: riemann_low_mach (lowMachScale, face_phase.cpp)
   /// The Riemann face pressure is in use. With external materials (coupled runs, asked for by
   /// `riemann`) it acts only at faces whose two cells hold none of them: computeCellMixes gives a
   /// cell with a solid no impedance, which turns off the face pressure's dissipation, the face

@@ -37,9 +37,10 @@ void IceSolver::initialize(const core::Scene& scene) {
   equilibriumWork_ = o.equilibrium == "with_work";
   q1_ = o.shock_viscosity_linear;
   q2_ = o.shock_viscosity_quadratic;
-  if (o.face_pressure != "auto" && o.face_pressure != "riemann" && o.face_pressure != "average")
+  if (o.face_pressure != "auto" && o.face_pressure != "riemann" && o.face_pressure != "riemann_low_mach" &&
+      o.face_pressure != "average")
     throw std::invalid_argument("ice.face_pressure: unknown value '" + o.face_pressure +
-                                "'; valid: auto, riemann, average");
+                                "'; valid: auto, riemann, riemann_low_mach, average");
   if (o.linear_solver == "cg") linearSolver_ = LinearSolver::Cg;
   else if (o.linear_solver == "bicgstab") linearSolver_ = LinearSolver::Bicgstab;
   else if (o.linear_solver == "pfmg_pcg") linearSolver_ = LinearSolver::PfmgPcg;
@@ -86,7 +87,9 @@ void IceSolver::initialize(const core::Scene& scene) {
   // term's acoustic dissipation rho c |du| at every fluid face damps the low-Mach flows and
   // acoustics coupled scenes are mostly about (the added-mass column's period -0.18 -> -1.11 %,
   // its amplitude -10 % per period). A shock scene with solids asks for riemann (configs/shock_slab.yaml).
-  riemannFacePressure_ = o.face_pressure == "riemann" || (o.face_pressure == "auto" && !anyExternal_);
+  riemannFacePressure_ = o.face_pressure == "riemann" || o.face_pressure == "riemann_low_mach" ||
+                         (o.face_pressure == "auto" && !anyExternal_);
+  riemannLowMach_ = o.face_pressure == "riemann_low_mach";
   for (int r = 0; r < nm; ++r)
     if (semiImplicit_ && st_.mat[r].eos->cavitates())
       badInput(scene.materials[r].cavitation.where,

@@ -20,8 +20,10 @@ namespace mpmice::ice {
 /// faces between fluid cells only (a solid's surface load stays ICE's average face pressure).
 struct CellMixes {
   core::Box box;
-  std::vector<double> rho, z;
+  std::vector<double> rho, z, p;
   std::array<std::vector<double>, 3> u;
+  /// Scale the Riemann terms by the faces' Mach number (lowMachScale in face_phase.cpp).
+  bool lowMach = false;
 };
 /// Fills x for the owned box grown by one layer (ghosts of mass, velocity, theta, specific
 /// volume and kappa filled); reuses x's storage.
@@ -43,7 +45,7 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
 /// The two-shock Riemann dissipation's impedance W_L W_R / (W_L + W_R) at a face with velocity
 /// jump du = u_R - u_L, W = z + kShockImpedanceSlope rho |du| of each side (z = rho c, the mixture's
 /// acoustic impedance, rho its density); 0 in expansion (du >= 0) or where a side has no impedance.
-[[nodiscard]] double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du);
+[[nodiscard]] double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du, double scale = 1.0);
 /// The Riemann dissipation's explicit rate on this rank: max over owned cells of
 /// sum_d (Z_lo + Z_hi) / (rho dx_d), Z the riemannImpedance of the cell's two faces normal to d and
 /// rho its mixture density (the term is a diffusion of velocity with nu = Z dx / rho at faces in

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "coupled_run.h"
@@ -26,8 +27,9 @@ const core::RegionSpec& regionNamed(const core::Scene& s, const std::string& nam
   throw std::runtime_error("shock_slab.yaml: no region '" + name + "'");
 }
 
-core::Scene slabScene(double dx) {
+core::Scene slabScene(double dx, const std::string& facePressure = "") {
   core::Scene s = core::loadScene(SHOCK_SLAB_SCENE);
+  if (!facePressure.empty()) s.ice.face_pressure = facePressure;
   const core::RealVect o = s.mesh.origin();
   const int n = static_cast<int>(std::lround((s.mesh.upper(0) - o[0]) / dx));
   s.mesh = core::Mesh(1, o, {dx, 1, 1}, {n, 1, 1});
@@ -40,8 +42,8 @@ struct SlabResult {
   double plateauMean = 0, plateauMin = 0, plateauMax = 0, frontSpeed = 0;
 };
 
-SlabResult runSlab(double dx) {
-  CoupledRun run(slabScene(dx));
+SlabResult runSlab(double dx, const std::string& facePressure = "") {
+  CoupledRun run(slabScene(dx, facePressure));
   const core::Scene& s = run.scene;
   const SlabExact ex = study::slabExact(s);
   const double slabEnd = regionNamed(s, "slab").shape.hi[0];
@@ -122,6 +124,20 @@ TEST(ShockOnSteelSlab, ReflectedPressureAndSteelWaveSpeed) {
   EXPECT_LT((plateauMax[1] - plateauMin[1]) / ex.p5, 0.03) << "the reflected plateau rings";
   EXPECT_LT(pErr[2], pErr[0]) << "the reflected pressure converges";
   for (std::size_t k = 0; k < dxs.size(); ++k) EXPECT_LT(cErr[k], 0.02) << "steel wave speed at dx " << dxs[k];
+}
+
+// ice.face_pressure: riemann_low_mach keeps the full dissipation at the shocks and in the noise
+// behind the reflected one (its strain term; the Mach scaling alone let the plateau ring 1.455 -
+// 1.59 MPa, 8.9 % of p5): measured 1.504 - 1.520 MPa (1.1 %), mean -0.24 %, at the scene's spacing.
+TEST(ShockOnSteelSlab, RiemannLowMachKeepsThePlateauSmooth) {
+  const core::Scene scene = core::loadScene(SHOCK_SLAB_SCENE);
+  const SlabExact ex = study::slabExact(scene);
+  const SlabResult r = runSlab(scene.mesh.spacing()[0], "riemann_low_mach");
+  std::printf("riemann_low_mach: plateau mean %.6g (error %.4f; min %.4g, max %.4g), front speed %.5g\n", r.plateauMean,
+              (r.plateauMean - ex.p5) / ex.p5, r.plateauMin, r.plateauMax, r.frontSpeed);
+  EXPECT_LT(std::abs(r.plateauMean - ex.p5) / ex.p5, 0.02) << "reflected pressure";
+  EXPECT_LT((r.plateauMax - r.plateauMin) / ex.p5, 0.03) << "the reflected plateau rings";
+  EXPECT_LT(std::abs(r.frontSpeed - ex.cSolid) / ex.cSolid, 0.02) << "steel wave speed";
 }
 
 }  // namespace
