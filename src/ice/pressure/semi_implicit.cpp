@@ -5,7 +5,9 @@
 // (`cg`, with ghost exchange per product), hypre's structured PCG preconditioned by PFMG or SMG
 // on the assembled stencil over all ranks (`pfmg_pcg`, `smg_pcg`) or Eigen's BiCGSTAB on it
 // (`bicgstab`, one rank). Then u_f,r = u*_f,r - dt phi_r,f grad dp and p = p_eq + dp.
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "ice/exchange/face_exchange.h"
@@ -105,6 +107,16 @@ linear::HypreStructPcg& IceSolver::structSolver() {
 }
 
 long IceSolver::preconditionerSetups() const { return semi_.hypre ? semi_.hypre->setups() : 0; }
+
+std::string IceSolver::pressureSolveSummary(long steps) const {
+  std::ostringstream o;
+  o << "ice: semi-implicit pressure (" << linearSolverName_ << "), " << linItersTotal_ << " linear iterations in "
+    << steps << " steps (" << double(linItersTotal_) / double(std::max(1L, steps)) << " per step)";
+  if (const long setups = preconditionerSetups(); setups > 0)
+    o << ", " << setups << " multigrid set-ups (ice.preconditioner_reuse "
+      << (linearSolver_ == LinearSolver::PfmgPcg ? preconditionerReuse_ : 1) << ")";
+  return o.str();
+}
 
 void IceSolver::solvePressureSystem() {
   SemiImplicitScratch& S = semi_;

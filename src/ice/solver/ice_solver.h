@@ -152,6 +152,9 @@ class IceSolver {
   [[nodiscard]] long linearIterationsTotal() const { return linItersTotal_; }
   /// Multigrid set-ups of hypre's pressure solver so far (pfmg_pcg, smg_pcg; 0 otherwise).
   [[nodiscard]] long preconditionerSetups() const;
+  /// The run's closing line on the semi-implicit pressure solve: the solver, the linear iterations
+  /// over `steps` steps and per step, the multigrid set-ups (with hypre).
+  [[nodiscard]] std::string pressureSolveSummary(long steps) const;
   [[nodiscard]] bool semiImplicit() const { return semiImplicit_; }
   /// Counters: cells where advection fell back to the internal-energy update (diagnostic).
   [[nodiscard]] long energyFallbacks() const { return fallbacks_; }

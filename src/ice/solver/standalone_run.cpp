@@ -95,6 +95,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (!outputs.written(solver.time()) && outputs.due(solver.time(), true)) output();  // no step taken
   record.completed();
   progress.finish(static_cast<int>(solver.steps()), solver.time(), double(scene.mesh.numCells()), "cell-steps");
+  if (comm.root() && solver.semiImplicit()) log << solver.pressureSolveSummary(solver.steps()) << "\n";
   if (comm.root() && writer) log << "output     " << writer->xdmfPath() << "\n";
   return 0;
 }

@@ -286,12 +286,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     }
   }
   if (comm.root() && sides.fluid && sides.fluid->solver().semiImplicit()) {
-    const long lin = sides.fluid->solver().linearIterationsTotal();
-    log << "ice: semi-implicit pressure (" << scene.ice.linear_solver << "), " << lin << " linear iterations in " << n
-        << " steps (" << double(lin) / double(std::max(1L, n)) << " per step)";
-    if (const long setups = sides.fluid->solver().preconditionerSetups(); setups > 0)
-      log << ", " << setups << " multigrid set-ups (ice.preconditioner_reuse " << scene.ice.preconditioner_reuse << ")";
-    log << "\n";
+    log << sides.fluid->solver().pressureSolveSummary(n) << "\n";
   }
   if (both)
     progress.finish(static_cast<int>(n), t, double(scene.mesh.numCells()));
