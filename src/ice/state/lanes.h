@@ -1,0 +1,38 @@
+#pragma once
+/// @brief Four faces (or cells) of a row as the lanes of one vector: GCC vector extensions (AVX
+/// registers where the build has them, SSE2 pairs on the baseline). Every lane-wise operation is
+/// the scalar one, and a branch of the scalar code becomes a select of the value it would have
+/// kept (sel), so lane-wise code gives the scalar code's bits; what it gains is the divisions and
+/// square roots of four faces in one instruction.
+#include <cstdint>
+#include <cstring>
+
+// The vector types are passed and returned by value between inline functions of one translation
+// unit; without AVX (MPMICE_SIMD baseline) GCC notes that a 32-byte vector's ABI differs from an
+// AVX build's (-Wpsabi), which matters only for calls across objects built with different flags.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+namespace mpmice::ice::lanes {
+
+using v4d = double __attribute__((vector_size(32)));
+/// Lane masks, as comparisons of v4d give them: -1 (true) or 0.
+using v4m = std::int64_t __attribute__((vector_size(32)));
+
+inline v4d load(const double* p) {
+  v4d v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store(double* p, v4d v) { std::memcpy(p, &v, sizeof v); }
+/// m ? a : b lane by lane.
+inline v4d sel(v4m m, v4d a, v4d b) { return m ? a : b; }
+inline v4d splat(double x) { return v4d{x, x, x, x}; }
+
+}  // namespace mpmice::ice::lanes
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
