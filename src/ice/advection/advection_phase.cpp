@@ -24,6 +24,11 @@
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
+// Lane vectors (lanes.h) between this file's inline functions (-Wpsabi: see lanes.h).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::ice {
 
 using core::forEach;
@@ -86,6 +91,33 @@ struct FaceValue {
     else return q0 + w * limitedSlope<L>(q0 - f[D - sd], f[D + sd] - q0);
   }
 };
+// FaceValue at four faces of a row (the lanes, lanes.h; cL: the first face's low cell, the others
+// follow it): the donor's value and the two around it are selected per lane from the four cells
+// cL - sd, cL, cR, cR + sd; the same operations as FaceValue.
+template <bool Second, Limiter L>
+struct FaceValueLanes {
+  std::int64_t cL, sd;
+  lanes::v4m up;  // uf > 0: the donor is cL
+  lanes::v4d w;
+  FaceValueLanes(Recon<Second, L>, lanes::v4d uf, std::int64_t cL_, std::int64_t sd_, double dt, double dx)
+      : cL(cL_), sd(sd_), up(uf > 0),
+        w(0.5 * lanes::sel(uf > 0, lanes::splat(1.0), lanes::splat(-1.0)) * (1.0 - lanes::abs(uf) * dt / dx)) {}
+  // The donor's value f[D].
+  [[gnu::always_inline]] lanes::v4d donor(const double* f) const {
+    return lanes::sel(up, lanes::load(f + cL), lanes::load(f + cL + sd));
+  }
+  [[gnu::always_inline]] lanes::v4d operator()(const double* f) const {
+    using lanes::load, lanes::sel;
+    const lanes::v4d a = load(f + cL), b = load(f + cL + sd);
+    const lanes::v4d q0 = sel(up, a, b);
+    if constexpr (!Second) return q0;
+    else {
+      const lanes::v4d qm = sel(up, load(f + cL - sd), a), qp = sel(up, b, load(f + cL + 2 * sd));
+      return q0 + w * limitedSlopeLanes<L>(q0 - qm, qp - q0);
+    }
+  }
+};
+
 // The isentrope through each stored cell's Lagrangian state (v_c, e_c) of one fluid, from the local
 // stiffened-gas fit of its EOS, p = Gamma e / v - P: Gamma = v dp/de at fixed v and P from the
 // cell's own pressure, both from two batch pressure calls, at e and 2 e (exact for the ideal and
@@ -299,12 +331,46 @@ void IceSolver::advectFluids() {
           P.flux[fi] = fm[r] * th2[r] * scale;
         }
       };
+      // face1 at the four faces fi .. fi + 3 (the lanes, lanes.h): the same operations in the
+      // same order, a face with uf = 0 or a zero volume fraction a select of what face1 leaves.
+      auto face1Lanes = [&]<int NM>(std::int64_t fi, std::int64_t cR) __attribute__((always_inline)) {
+        using lanes::v4d, lanes::v4m, lanes::load, lanes::sel, lanes::splat;
+        const std::int64_t cL = cR - sd;
+        const v4d zero = splat(0.0);
+        v4d th1[NM], th2[NM], fm[NM];
+        v4d s1 = zero, s2 = zero;
+        for (int r = 0; r < NM; ++r) {
+          const Ptr& P = ptr[r];
+          th1[r] = th2[r] = fm[r] = zero;
+          if (P.skip) continue;
+          const v4d uf = load(P.uf + fi);
+          const v4m on = uf != 0;
+          const FaceValueLanes face(rc, uf, cL, sd, dt, dx);
+          const v4d sgn = sel(uf > 0, splat(1.0), splat(-1.0));
+          th1[r] = sel(on, face.donor(P.th), zero);
+          th2[r] = sel(on, face(P.th), zero);
+          s1 = sel(on, s1 + th1[r], s1);
+          s2 = sel(on, s2 + th2[r], s2);
+          fm[r] = sel(on, sgn * lanes::abs(uf) * dt * A / face(P.sv), zero);
+        }
+        const v4d target = solidFaces != nullptr ? sel(s1 > 0, 1.0 - load(solidFaces->data() + fi), s1) : s1;
+        const v4d scale = sel(s2 > 0, target / s2, zero);
+        for (int r = 0; r < NM; ++r) {
+          const Ptr& P = ptr[r];
+          if (P.skip) continue;
+          const v4m none = (th1[r] == 0) & (th2[r] == 0);
+          lanes::store(P.flux + fi, sel(none, zero, fm[r] * th2[r] * scale));
+        }
+      };
       // The faces in forEach's order, by rows (flat indices along each row).
       auto sweep1 = [&]<int NM>() {
         for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
           for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
             std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
+            int i = fb.lo[0];
+            if constexpr (NM > 0)
+              for (; i + 3 <= fb.hi[0]; i += 4, fi += 4, cR += 4) face1Lanes.template operator()<NM>(fi, cR);
+            for (; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
           }
       };
       if (nm == 2) sweep1.template operator()<2>();

@@ -30,6 +30,17 @@ inline void store(double* p, v4d v) { std::memcpy(p, &v, sizeof v); }
 /// m ? a : b lane by lane.
 inline v4d sel(v4m m, v4d a, v4d b) { return m ? a : b; }
 inline v4d splat(double x) { return v4d{x, x, x, x}; }
+/// |v| lane by lane (std::abs: the sign bit cleared).
+inline v4d abs(v4d v) {
+  using v4u = std::uint64_t __attribute__((vector_size(32)));
+  v4u b;
+  std::memcpy(&b, &v, sizeof b);
+  b &= ~(std::uint64_t{1} << 63);
+  std::memcpy(&v, &b, sizeof v);
+  return v;
+}
+/// Whether any lane of m is set.
+inline bool any(v4m m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
 }  // namespace mpmice::ice::lanes
 
