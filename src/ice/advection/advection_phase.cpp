@@ -52,21 +52,23 @@ enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRem
 // between two isentropes), and the internal energy of a sum of parts is at least the sum of
 // theirs (|P|^2 / 2m is convex and of degree 1), so the cell's e and v after advection are
 // positive by construction, whatever the face values.
+// R: the donor's first sum, the others rs apart (AdvectionScratch::remainder: one array per sum).
 // Inlined: one per cell.
-[[gnu::always_inline]] inline double positivityBlend(const double* R, double eThermal, double vD) {
-  const double mr = R[kRemMass];
+[[gnu::always_inline]] inline double positivityBlend(const double* R, std::int64_t rs, double eThermal, double vD) {
+  auto sum = [&](int q) { return R[q * rs]; };
+  const double mr = sum(kRemMass);
   if (!(mr > 0)) return 1.0;
   double b = 1.0;
   const double C = (1.0 - kMinRemainderShare) * mr * eThermal;
-  const double A = R[kRemE];
-  const double P2 = R[kRemUx] * R[kRemUx] + R[kRemUy] * R[kRemUy] + R[kRemUz] * R[kRemUz];
-  if (C > 0 && (A + 0.5 * R[kRemU2] - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
-    const double B = R[kRemU2] + P2 / mr;
+  const double A = sum(kRemE);
+  const double P2 = sum(kRemUx) * sum(kRemUx) + sum(kRemUy) * sum(kRemUy) + sum(kRemUz) * sum(kRemUz);
+  if (C > 0 && (A + 0.5 * sum(kRemU2) - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
+    const double B = sum(kRemU2) + P2 / mr;
     b = std::min(b, 2.0 * C / (A + std::sqrt(A * A + 2.0 * B * C)));
   }
   if (C > 0 && -A > C) b = std::min(b, C / -A);
   const double Cv = (1.0 - kMinRemainderShare) * mr * vD;
-  if (Cv > 0 && std::abs(R[kRemV]) > Cv) b = std::min(b, Cv / std::abs(R[kRemV]));
+  if (Cv > 0 && std::abs(sum(kRemV)) > Cv) b = std::min(b, Cv / std::abs(sum(kRemV)));
   return b;
 }
 
@@ -533,14 +535,16 @@ void IceSolver::advectFluids() {
     adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
     adv_.blends.clear();
     double* rem = adv_.remainder.data();
-    // An owned cell (i, j, k)'s sums: rem + remRow(j, k) + remCol(i).
+    // An owned cell (i, j, k)'s sums: R = rem + remRow(j, k) + remCol(i), sum q at R[q rs] (one
+    // array of the two slabs per sum: a row's cells are consecutive in each, for the lanes).
+    const std::int64_t rs = 2 * slabSize;
     const std::int64_t nx = owned_.length(0);
     auto remRow = [&](int j, int k) -> std::int64_t {
       if (top == 0) return 0;
       const int t = top == 1 ? j : k;
-      return ((t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0)) * kRemSums;
+      return (t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0);
     };
-    auto remCol = [&](int i) -> std::int64_t { return (top == 0 ? (i & 1) : i - owned_.lo[0]) * kRemSums; };
+    auto remCol = [&](int i) -> std::int64_t { return top == 0 ? (i & 1) : i - owned_.lo[0]; };
     // Calls f(c, R) for every owned cell of slab s (c its stored index, R its sums).
     auto forSlab = [&](int s, auto&& f) {
       const core::Box b = slab(s);
@@ -550,9 +554,9 @@ void IceSolver::advectFluids() {
           const std::int64_t c0 = sb.index(b.lo[0], j, k);
           if (top == 0) {
             for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
-          } else {  // remCol(i) = (i - lo) kRemSums
+          } else {  // remCol(i) = i - lo
             double* Ri = R + remCol(b.lo[0]);
-            for (int i = b.lo[0]; i <= b.hi[0]; ++i, Ri += kRemSums) f(c0 + (i - b.lo[0]), Ri);
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i, ++Ri) f(c0 + (i - b.lo[0]), Ri);
           }
         }
     };
@@ -562,12 +566,104 @@ void IceSolver::advectFluids() {
     auto pass2Faces = [&]<bool Inner, int DIM>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
       static_assert(DIM > 0);
       constexpr int tp = DIM - 1;  // top
-      auto col = [&](int ii) -> std::int64_t { return (tp == 0 ? (ii & 1) : ii - owned_.lo[0]) * kRemSums; };
+      auto col = [&](int ii) -> std::int64_t { return tp == 0 ? (ii & 1) : ii - owned_.lo[0]; };
       const int lo = owned_.lo[d], hi = owned_.hi[d];
       std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
       // The sums' rows of the cells on the high and the low side (owned rows only are read).
       const std::int64_t rowR = remRow(j, k), rowL = d == 0 ? rowR : remRow(j - (d == 1), k - (d == 2));
-      for (int i = ilo; i <= ihi; ++i, ++fi, ++cR) {
+      int i = ilo;
+      if constexpr (Inner && DIM >= 2) {
+        // Four faces at once (the lanes, lanes.h): the loop below's operations, a face with F = 0
+        // a select of what it leaves. Along x lane l's high cell is lane l + 1's low cell: each
+        // cell's terms in the loop's order, its low face's (+=) before its high face's (-=).
+        using lanes::v4d, lanes::v4m, lanes::load, lanes::store, lanes::sel;
+        const v4m keep3 = {-1, -1, -1, 0};
+        auto next = [](auto v) { return __builtin_shufflevector(v, v, 1, 2, 3, 3); };  // lane l + 1's
+        for (; i + 3 <= ihi; i += 4, fi += 4, cR += 4) {
+          const v4d F = load(P.Fm + fi);
+          const v4m nz = F != 0;
+          if (!lanes::any(nz)) continue;
+          const std::int64_t cL = cR - P.sd;
+          const v4d lam = sel(F > 0, load(P.sc + cL), load(P.sc + cR));
+          const FaceValueLanes face(rc, load(P.uf + fi), cL, P.sd, dt, P.dx);
+          v4d fu[DIM];
+          for (int q = 0; q < DIM; ++q) fu[q] = face(P.u[q]);
+          const v4d fv = face(P.vL);
+          v4d fe = face(P.eL);
+          if constexpr (Second) {  // faceStateDim's entropy bound, lane by lane where it applies
+            if (entropyBound) {
+              const v4d tD = face.donor(P.th), tO = sel(face.up, load(P.th + cR), load(P.th + cL));
+              const v4m b = nz & (tD >= 1.0 - kPresentFraction) & (tO >= 1.0 - kPresentFraction);  // singleFluid
+              if (lanes::any(b))
+                for (int l = 0; l < 4; ++l)
+                  if (b[l]) {
+                    const std::int64_t D = face.up[l] ? cL + l : cR + l, O = face.up[l] ? cR + l : cL + l;
+                    fe[l] = entropyBounded(fe[l], fv[l], D, O, P.eL, P.vL, P.isG, P.isP);
+                  }
+            }
+          }
+          auto apply = [&](double* acc, v4d flux) {
+            const v4d v = lam * flux;
+            if (d == 0) {
+              v4d a = load(acc + cR);
+              a = sel(nz, a + v, a);
+              a = sel(next(nz) & keep3, a - next(v), a);
+              store(acc + cR, a);
+              if (nz[0]) acc[cL] -= v[0];
+            } else {
+              const v4d aL = load(acc + cL), aR = load(acc + cR);
+              store(acc + cL, sel(nz, aL - v, aL));
+              store(acc + cR, sel(nz, aR + v, aR));
+            }
+          };
+          v4d ke = lanes::splat(0.0);
+          for (int q = 0; q < DIM; ++q) {
+            apply(P.a[kMomX + q], F * fu[q]);
+            ke += fu[q] * fu[q];
+          }
+          apply(P.a[kMass], F);
+          apply(P.a[kEnergy], F * (fe + 0.5 * ke));
+          apply(P.a[kVolume], F * fv);
+          apply(P.a[kEint], F * fe);
+          // The donors' sums: lanes with the donor cL (dL) or cR (dR); nt terms t added (or
+          // subtracted) to sum q in order.
+          const v4d w = lam * lanes::abs(F);
+          const v4m dL = nz & face.up, dR = nz & ~face.up;
+          const std::int64_t sR = rowR + col(i), sL = rowL + col(i - (d == 0));
+          auto sums = [&](int q, const v4d* t, int nt, bool sub) {
+            double* Rq = rem + q * rs;
+            auto add = [&](v4d a, v4d x) { return sub ? a - x : a + x; };
+            if (d == 0) {  // sL = sR - 1
+              v4d a = load(Rq + sR);
+              for (int n = 0; n < nt; ++n) a = sel(dR, add(a, t[n]), a);
+              const v4m mL = next(dL) & keep3;
+              for (int n = 0; n < nt; ++n) a = sel(mL, add(a, next(t[n])), a);
+              store(Rq + sR, a);
+              if (dL[0])
+                for (int n = 0; n < nt; ++n) Rq[sL] = sub ? Rq[sL] - t[n][0] : Rq[sL] + t[n][0];
+            } else {
+              v4d aR = load(Rq + sR), aL = load(Rq + sL);
+              for (int n = 0; n < nt; ++n) aR = sel(dR, add(aR, t[n]), aR), aL = sel(dL, add(aL, t[n]), aL);
+              store(Rq + sR, aR);
+              store(Rq + sL, aL);
+            }
+          };
+          sums(kRemMass, &w, 1, true);
+          const v4d tE = w * (fe - face.donor(P.eL));
+          sums(kRemE, &tE, 1, false);
+          v4d tU2[DIM];
+          for (int q = 0; q < DIM; ++q) {
+            const v4d du = fu[q] - face.donor(P.u[q]);
+            tU2[q] = w * du * du;
+            const v4d tU = w * du;
+            sums(kRemUx + q, &tU, 1, false);
+          }
+          sums(kRemU2, tU2, DIM, false);
+          const v4d tV = w * (fv - face.donor(P.vL));
+          sums(kRemV, &tV, 1, false);
+        }
+      }
+      for (; i <= ihi; ++i, ++fi, ++cR) {
         const double F = P.Fm[fi];
         if (F == 0) continue;
         const std::int64_t cL = cR - P.sd;
@@ -594,14 +690,14 @@ void IceSolver::advectFluids() {
         if (D == cL ? ownL : ownR) {
           double* R = rem + (D == cL ? rowL + col(i - (d == 0)) : rowR + col(i));
           const double w = lam * std::abs(F);
-          R[kRemMass] -= w;
-          R[kRemE] += w * (f.e - P.eL[D]);
+          R[kRemMass * rs] -= w;
+          R[kRemE * rs] += w * (f.e - P.eL[D]);
           for (int q = 0; q < DIM; ++q) {  // beyond dim the face velocity is the donor's
             const double du = f.u[q] - P.u[q][D];
-            R[kRemU2] += w * du * du;
-            R[kRemUx + q] += w * du;
+            R[kRemU2 * rs] += w * du * du;
+            R[(kRemUx + q) * rs] += w * du;
           }
-          R[kRemV] += w * (f.v - P.vL[D]);
+          R[kRemV * rs] += w * (f.v - P.vL[D]);
         }
       }
     };
@@ -674,8 +770,8 @@ void IceSolver::advectFluids() {
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
         if (s <= owned_.hi[top]) {
           forSlab(s, [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
-            R[kRemMass] = ms[c];
-            for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
+            R[kRemMass * rs] = ms[c];
+            for (int q = 1; q < kRemSums; ++q) R[q * rs] = 0.0;
           });
           if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
           if (dim == 3) {
@@ -695,7 +791,7 @@ void IceSolver::advectFluids() {
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
         forSlab(s - 1, [&](std::int64_t c, const double* R) {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
-          const double b = positivityBlend(R, eL[c] - ec, vL[c]);
+          const double b = positivityBlend(R, rs, eL[c] - ec, vL[c]);
           if (b < 1.0) {
             adv_.blends.push_back({c, b});
             ++positivityBlends_;
