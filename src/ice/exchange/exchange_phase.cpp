@@ -18,6 +18,11 @@
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
+// Lane vectors (lanes.h) between this file's inline lambdas (-Wpsabi: see lanes.h).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::ice {
 
 void IceSolver::exchange() {
@@ -101,13 +106,69 @@ void IceSolver::exchange() {
       }
     }
   };
+  // cell() at the four cells c .. c + 3 (the lanes, lanes.h): the same operations in the same
+  // order (the temperature's, (e - e_cold(rho)) / cv, too), branches as selects.
+  auto cellLanes = [&]<int NM, int DIM>(std::int64_t c, std::int64_t o) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::load, lanes::store, lanes::sel, lanes::splat;
+    v4d s[NM], w[NM * NM], x[3 * NM], x0[3 * NM], mass[NM], th[NM];
+    for (int r = 0; r < NM; ++r) {
+      mass[r] = load(ptr[r].m + c);
+      th[r] = load(ptr[r].th + c);
+    }
+    if (anyK_) {
+      for (int r = 0; r < NM; ++r) {
+        s[r] = mass[r];
+        for (int d = 0; d < DIM; ++d) x[d * NM + r] = x0[d * NM + r] = load(ptr[r].uL[d] + c);
+      }
+      exchangeCouplingsLanes<NM>(dtV, K_.data(), th, w);
+      pointwiseExchangeLanes<NM, DIM>(s, w, x);
+      v4d D = splat(0.0), C = splat(0.0);
+      for (int r = 0; r < NM; ++r) {
+        for (int d = 0; d < DIM; ++d) {
+          const v4d un = x[d * NM + r], uo = x0[d * NM + r];
+          D += 0.5 * mass[r] * (uo - un) * (uo + un);
+        }
+        C += mass[r] * ptr[r].cv;
+      }
+      for (int r = 0; r < NM; ++r) {
+        const Ptr& Q = ptr[r];
+        const v4d de = sel(C > 0, D * ptr[r].cv / C, splat(0.0));
+        for (int d = 0; d < DIM; ++d) {
+          const v4d un = x[d * NM + r], uo = x0[d * NM + r];
+          store(Q.uL[d] + c, un);
+          if (Q.external) store(Q.dMom[d] + o, mass[r] * (un - uo));
+        }
+        store(Q.eL + c, load(Q.eL + c) + de);
+        if (Q.external) store(Q.dE + o, load(Q.dE + o) + mass[r] * de);
+      }
+    }
+    if (anyH_) {
+      for (int r = 0; r < NM; ++r) {
+        const Eos& eos = *st_.mat[r].eos;
+        s[r] = mass[r] * ptr[r].cv;
+        const v4d rho = 1.0 / load(ptr[r].vL + c), e = load(ptr[r].eL + c);
+        const v4d cold = {eos.coldEnergy(rho[0]), eos.coldEnergy(rho[1]), eos.coldEnergy(rho[2]), eos.coldEnergy(rho[3])};
+        x[r] = x0[r] = (e - cold) / eos.cv();  // Eos::temperature
+      }
+      exchangeCouplingsLanes<NM>(dtV, H_.data(), th, w);
+      pointwiseExchangeLanes<NM, 1>(s, w, x);
+      for (int r = 0; r < NM; ++r) {
+        const v4d de = ptr[r].cv * (x[r] - x0[r]);
+        store(ptr[r].eL + c, load(ptr[r].eL + c) + de);
+        if (ptr[r].external) store(ptr[r].dE + o, load(ptr[r].dE + o) + mass[r] * de);
+      }
+    }
+  };
   // The owned cells in forEach's order, by rows (flat indices: o counts the owned cells).
   auto sweep = [&]<int NM, int DIM>() {
     std::int64_t o = 0;
     for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
       for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
         std::int64_t c = sb.index(owned_.lo[0], j, k);
-        for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+        int i = owned_.lo[0];
+        if constexpr (NM > 0 && DIM > 0)
+          for (; i + 3 <= owned_.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
+        for (; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
   if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();

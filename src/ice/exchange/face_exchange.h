@@ -52,41 +52,14 @@ inline void faceExchange(int n, double dt, const double* K, const double* theta,
   faceExchangeFixed<0>(n, dt, K, theta, v, x, nrhs);
 }
 
-/// faceExchangeFixed<N> with one right-hand side at four faces (the lanes; lanes.h): the same
-/// operations in the same order, each skipped elimination step (an absent pivot, a zero coupling)
-/// a select of the values it leaves; x in: x^in, out: exchanged.
+/// faceExchangeFixed<N> with one right-hand side at four faces (the lanes).
 template <int N>
 inline void faceExchangeLanes(double dt, const double* K, const lanes::v4d* theta, const lanes::v4d* v,
                               lanes::v4d* x) {
-  static_assert(N > 0 && N <= kMaxMaterials);
-  using lanes::v4d, lanes::v4m, lanes::sel;
-  v4d s[N], w[N * N], b[N], piv[N];
+  lanes::v4d s[N], w[N * N];
   for (int r = 0; r < N; ++r) s[r] = theta[r] / v[r];
-  for (int r = 0; r < N; ++r)  // exchangeCouplingsFixed
-    for (int q = 0; q < N; ++q) w[r * N + q] = dt * K[r * N + q] * theta[r] * theta[q];
-  for (int r = 0; r < N; ++r) b[r] = s[r] * x[r];  // pointwiseExchangeFixed
-  for (int k = 0; k < N; ++k) {
-    v4d a = s[k];
-    for (int j = k + 1; j < N; ++j) a += w[k * N + j];
-    piv[k] = a;
-    if (k + 1 == N) break;
-    const v4m on = a > 0;
-    const v4d inv = 1.0 / a;
-    for (int i = k + 1; i < N; ++i) {
-      const v4d wik = w[i * N + k];
-      const v4m m = on & (wik != 0);
-      const v4d f = wik * inv;
-      s[i] = sel(m, s[i] + f * s[k], s[i]);
-      for (int j = k + 1; j < N; ++j)
-        if (j != i) w[i * N + j] = sel(m, w[i * N + j] + f * w[k * N + j], w[i * N + j]);
-      b[i] = sel(m, b[i] + f * b[k], b[i]);
-    }
-  }
-  for (int k = N - 1; k >= 0; --k) {
-    v4d acc = b[k];
-    for (int j = k + 1; j < N; ++j) acc += w[k * N + j] * x[j];
-    x[k] = sel(piv[k] > 0, acc / piv[k], x[k]);
-  }
+  exchangeCouplingsLanes<N>(dt, K, theta, w);
+  pointwiseExchangeLanes<N, 1>(s, w, x);
 }
 
 }  // namespace mpmice::ice

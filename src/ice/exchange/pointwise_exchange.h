@@ -12,6 +12,13 @@
 /// right-hand sides (velocity components) with one factorisation.
 #include <cstddef>
 
+#include "ice/state/lanes.h"
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::ice {
 
 inline constexpr int kMaxMaterials = 16;
@@ -79,4 +86,53 @@ inline void exchangeCouplings(int n, double scale, const double* K, const double
   exchangeCouplingsFixed<0>(n, scale, K, theta, w);
 }
 
+/// pointwiseExchangeFixed<N, NRHS> at four cells or faces (the lanes, lanes.h): the same
+/// operations in the same order, each skipped elimination step (an absent pivot, a zero coupling)
+/// a select of the values it leaves. s, w: scratch (modified); x[c * N + r] in: x^in, out:
+/// exchanged.
+template <int N, int NRHS>
+inline void pointwiseExchangeLanes(lanes::v4d* s, lanes::v4d* w, lanes::v4d* x) {
+  static_assert(N > 0 && N <= kMaxMaterials && NRHS > 0 && NRHS <= 3);
+  using lanes::v4d, lanes::v4m, lanes::sel;
+  v4d b[NRHS * N], piv[N];
+  for (int c = 0; c < NRHS; ++c)
+    for (int r = 0; r < N; ++r) b[c * N + r] = s[r] * x[c * N + r];
+  for (int k = 0; k < N; ++k) {
+    v4d a = s[k];
+    for (int j = k + 1; j < N; ++j) a += w[k * N + j];
+    piv[k] = a;
+    if (k + 1 == N) break;
+    const v4m on = a > 0;
+    const v4d inv = 1.0 / a;
+    for (int i = k + 1; i < N; ++i) {
+      const v4d wik = w[i * N + k];
+      const v4m m = on & (wik != 0);
+      const v4d f = wik * inv;
+      s[i] = sel(m, s[i] + f * s[k], s[i]);
+      for (int j = k + 1; j < N; ++j)
+        if (j != i) w[i * N + j] = sel(m, w[i * N + j] + f * w[k * N + j], w[i * N + j]);
+      for (int c = 0; c < NRHS; ++c) b[c * N + i] = sel(m, b[c * N + i] + f * b[c * N + k], b[c * N + i]);
+    }
+  }
+  for (int k = N - 1; k >= 0; --k) {
+    const v4m on = piv[k] > 0;
+    for (int c = 0; c < NRHS; ++c) {
+      v4d acc = b[c * N + k];
+      for (int j = k + 1; j < N; ++j) acc += w[k * N + j] * x[c * N + j];
+      x[c * N + k] = sel(on, acc / piv[k], x[c * N + k]);
+    }
+  }
+}
+
+/// exchangeCouplingsFixed<N> at four cells or faces: w_rq = scale K_rq theta_r theta_q.
+template <int N>
+inline void exchangeCouplingsLanes(double scale, const double* K, const lanes::v4d* theta, lanes::v4d* w) {
+  for (int r = 0; r < N; ++r)
+    for (int q = 0; q < N; ++q) w[r * N + q] = scale * K[r * N + q] * theta[r] * theta[q];
+}
+
 }  // namespace mpmice::ice
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
