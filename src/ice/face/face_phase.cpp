@@ -70,6 +70,13 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
   return 1.0 / (wL + wR);
 }
 
+// riemannImpedance at four faces (the lanes, lanes.h): the same operations, 0 where it returns 0.
+lanes::v4d riemannImpedanceLanes(lanes::v4d zL, lanes::v4d rhoL, lanes::v4d zR, lanes::v4d rhoR, lanes::v4d du) {
+  const lanes::v4m on = (du < 0) & (zL > 0) & (zR > 0);
+  const lanes::v4d wL = zL - kShockImpedanceSlope * rhoL * du, wR = zR - kShockImpedanceSlope * rhoR * du;
+  return lanes::sel(on, wL * wR / (wL + wR), lanes::splat(0.0));
+}
+
 // The acoustic impedance rho c = 1 / sqrt(v kappa) of material m in stored cell c; 0 where it is
 // absent (theta at most kPresentFraction) or has no finite compressibility (a held trace, kappa 0;
 // a cavitated liquid, kappa inf).
@@ -155,13 +162,39 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
   };
+  // cell() at the four cells c .. c + 3 (the lanes, lanes.h): the same operations, selects for
+  // its branches.
+  auto cellLanes = [&]<int NM, int DIM>(std::int64_t c, std::size_t o) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::v4m, lanes::load, lanes::sel, lanes::splat;
+    const v4d zero = splat(0.0);
+    v4d mass = zero, mu[DIM], dn = zero, kap = zero;
+    for (int d = 0; d < DIM; ++d) mu[d] = zero;
+    v4m solid = v4m{0, 0, 0, 0};
+    for (int r = 0; r < NM; ++r) {
+      const Ptr& m = ptr[r];
+      const v4d mm = load(m.m + c);
+      mass += mm;
+      if (m.external) solid = solid | (mm > 0);
+      for (int d = 0; d < DIM; ++d) mu[d] += mm * load(m.u[d] + c);
+      const v4d t = load(m.th + c);
+      const v4m on = t > 0;
+      dn = sel(on, dn + t / load(m.sv + c), dn);
+      kap = sel(on, kap + t * load(m.ka + c), kap);
+    }
+    lanes::store(x.rho.data() + o, dn);
+    lanes::store(x.z.data() + o, sel((dn > 0) & (kap > 0) & ~solid, lanes::sqrt(dn / kap), zero));
+    for (int d = 0; d < DIM; ++d) lanes::store(xu[d] + o, sel(mass > 0, mu[d] / mass, zero));
+  };
   // The cells in forEach's order, by rows (flat indices along each row; o counts the box's cells).
   auto sweep = [&]<int NM, int DIM>() {
     std::size_t o = 0;
     for (int k = box.lo[2]; k <= box.hi[2]; ++k)
       for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
         std::int64_t c = sb.index(box.lo[0], j, k);
-        for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+        int i = box.lo[0];
+        if constexpr (NM > 0 && DIM > 0)
+          for (; i + 3 <= box.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
+        for (; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
   if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
@@ -388,12 +421,37 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
   const CellMixes& x = mixes ? *mixes : own;
   const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   double rate = 0;
+  // The cell's rate at the four cells c .. c + 3 (the lanes, lanes.h: the same operations); the
+  // maximum taken cell by cell in order, as below.
+  auto cellLanes = [&](int i, int j, int k, std::int64_t c) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::load;
+    const double *z = x.z.data(), *rh = x.rho.data();
+    const v4d zC = load(z + c), rC = load(rh + c);
+    v4d s = lanes::splat(0.0);
+    for (int d = 0; d < dim; ++d) {
+      const double* u = x.u[static_cast<std::size_t>(d)].data();
+      const std::int64_t L = c - strides[d], R = c + strides[d];
+      const v4d uC = load(u + c);
+      s += (riemannImpedanceLanes(load(z + L), load(rh + L), zC, rC, uC - load(u + L)) +
+            riemannImpedanceLanes(zC, rC, load(z + R), load(rh + R), load(u + R) - uC)) /
+           mesh.dx(d);
+    }
+    s = lanes::sel(rC > 0, s / rC, lanes::splat(0.0));
+    for (int l = 0; l < 4; ++l)
+      if (s[l] > rate) {
+        rate = s[l];
+        if (cell) *cell = sb.index(i + l, j, k);
+      }
+  };
   // The owned cells in forEach's order, by rows (c: the index in the mixtures' box).
   auto sweep = [&](auto&& f) {
     for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
       for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
         std::int64_t c = x.box.index(owned.lo[0], j, k);
-        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
+        int i = owned.lo[0];
+        if (dim > 0)
+          for (; i + 3 <= owned.hi[0]; i += 4, c += 4) cellLanes(i, j, k, c);
+        for (; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
       }
   };
   sweep([&](int i, int j, int k, std::int64_t c) {
@@ -454,13 +512,40 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
       if (riemann && rL > 0 && rR > 0) pf += riemannDissipation(x, R - strides[d], R, d);
       pface[fi] = pf;
     };
+    // face() at the four faces fi .. fi + 3 without the shock viscosity (the lanes, lanes.h: the
+    // same operations, selects for its branches).
+    auto faceLanes = [&]<int NM>(std::int64_t cR, std::int64_t fi, std::int64_t R) __attribute__((always_inline)) {
+      using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+      const std::int64_t cL = cR - cellStrides[d];
+      v4d rL = lanes::splat(0.0), rR = lanes::splat(0.0);
+      for (int r = 0; r < NM; ++r) {
+        const double* ms = mass[static_cast<std::size_t>(r)];
+        rL += load(ms + cL);
+        rR += load(ms + cR);
+      }
+      const v4d pL = load(press + cL), pR = load(press + cR);
+      const v4m on = rL + rR > 0;
+      v4d pf = sel(on, pL * rR + pR * rL, 0.5 * (pL + pR)) / sel(on, rL + rR, lanes::splat(1.0));
+      if (riemann) {  // riemannDissipation
+        const double *u = x.u[static_cast<std::size_t>(d)].data(), *z = x.z.data(), *rh = x.rho.data();
+        const std::int64_t L = R - strides[d];
+        const v4d du = load(u + R) - load(u + L);
+        const v4d diss = -riemannImpedanceLanes(load(z + L), load(rh + L), load(z + R), load(rh + R), du) * du;
+        pf = sel((rL > 0) & (rR > 0), pf + diss, pf);
+      }
+      lanes::store(pface + fi, pf);
+    };
     // The faces in forEach's order, by rows (flat indices along each row).
     auto sweep = [&]<int NM>() {
       for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
         for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
           const int i0 = fb.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k), R = riemann ? x.box.index(i0, j, k) : 0;
-          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
+          int i = i0;
+          if constexpr (NM > 0)
+            if (!q)
+              for (; i + 3 <= fb.hi[0]; i += 4, cR += 4, fi += 4, R += 4) faceLanes.template operator()<NM>(cR, fi, R);
+          for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
         }
     };
     if (nm == 2) sweep.template operator()<2>();

@@ -4,8 +4,13 @@
 /// the scalar one, and a branch of the scalar code becomes a select of the value it would have
 /// kept (sel), so lane-wise code gives the scalar code's bits; what it gains is the divisions and
 /// square roots of four faces in one instruction.
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
 
 // The vector types are passed and returned by value between inline functions of one translation
 // unit; without AVX (MPMICE_SIMD baseline) GCC notes that a 32-byte vector's ABI differs from an
@@ -38,6 +43,14 @@ inline v4d abs(v4d v) {
   b &= ~(std::uint64_t{1} << 63);
   std::memcpy(&v, &b, sizeof v);
   return v;
+}
+/// The square root lane by lane (correctly rounded, as std::sqrt).
+inline v4d sqrt(v4d v) {
+#ifdef __AVX__
+  return v4d(_mm256_sqrt_pd(__m256d(v)));
+#else
+  return v4d{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+#endif
 }
 /// Whether any lane of m is set.
 inline bool any(v4m m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
