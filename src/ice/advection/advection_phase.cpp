@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
@@ -120,6 +121,33 @@ struct FaceValueLanes {
   }
 };
 
+// acc[cL] -= v and acc[cR] += v at the four faces (lanes) with nz set, cL = cR - sd, each cell's
+// terms in the order of the face-by-face loop: along a row (alongRow, sd = 1) lane l's high cell is
+// lane l + 1's low cell, and a cell's low face's term (+=) comes before its high face's (-=).
+// ownL, ownR: whether the low and high cells take their terms (across rows only).
+[[gnu::always_inline]] inline void applyLanes(double* acc, lanes::v4d v, lanes::v4m nz, std::int64_t cL,
+                                              std::int64_t cR, bool alongRow, bool ownL = true, bool ownR = true) {
+  using lanes::v4d, lanes::load, lanes::store, lanes::sel;
+  if (alongRow) {
+    const lanes::v4m keep3 = {-1, -1, -1, 0};
+    auto next = [](auto x) { return __builtin_shufflevector(x, x, 1, 2, 3, 3); };  // lane l + 1's
+    v4d a = load(acc + cR);
+    a = sel(nz, a + v, a);
+    a = sel(next(nz) & keep3, a - next(v), a);
+    store(acc + cR, a);
+    if (nz[0]) acc[cL] -= v[0];
+  } else {
+    if (ownL) {
+      const v4d aL = load(acc + cL);
+      store(acc + cL, sel(nz, aL - v, aL));
+    }
+    if (ownR) {
+      const v4d aR = load(acc + cR);
+      store(acc + cR, sel(nz, aR + v, aR));
+    }
+  }
+}
+
 // The isentrope through each stored cell's Lagrangian state (v_c, e_c) of one fluid, from the local
 // stiffened-gas fit of its EOS, p = Gamma e / v - P: Gamma = v dp/de at fixed v and P from the
 // cell's own pressure, both from two batch pressure calls, at e and 2 e (exact for the ideal and
@@ -215,6 +243,17 @@ void IceSolver::advectFluids() {
     a[kVolume] = m.spvol.data();
     a[kEint] = adv_.eint.data();
   };
+  // The owned cells in forEach's order (ownedCells_), by rows: f4(c) for the four cells c .. c + 3
+  // (the lanes), f1(c) for one (the rest of a row).
+  auto forOwnedRows = [&](auto&& f4, auto&& f1) {
+    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+        std::int64_t c = sb.index(owned_.lo[0], j, k);
+        int i = owned_.lo[0];
+        for (; i + 3 <= owned_.hi[0]; i += 4, c += 4) f4(c);
+        for (; i <= owned_.hi[0]; ++i, ++c) f1(c);
+      }
+  };
   // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
   // velocity, specific volume and internal energy (its velocity and energy, the face values'
   // sources, held the Lagrangian values until here).
@@ -231,7 +270,7 @@ void IceSolver::advectFluids() {
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
     const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-    for (const std::int64_t c : ownedCells_) {
+    auto cell = [&](std::int64_t c) {
       const double mass = a[kMass][c];
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
@@ -240,7 +279,7 @@ void IceSolver::advectFluids() {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
         v[c] = vL[c];
-        continue;
+        return;
       }
       const double inv = 1.0 / mass;
       double ke = 0;
@@ -270,7 +309,40 @@ void IceSolver::advectFluids() {
         e[c] = eE;
       }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
-    }
+    };
+    // cell() at the four cells c .. c + 3 (the lanes, the same operations) where each of them is
+    // present, keeps its volume and needs no energy fallback (without a cold energy); otherwise
+    // cell() one after the other. The audit's sum taken cell by cell in order.
+    auto cellLanes = [&](std::int64_t c) {
+      using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+      if constexpr (DIM > 0) {
+        if (!cold) {
+          const v4d mass = load(a[kMass] + c);
+          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(adv_.fluidMass.data() + c));
+          const v4d inv = 1.0 / mass;
+          v4d ud[DIM], ke = lanes::splat(0.0);
+          for (int d = 0; d < DIM; ++d) {
+            ud[d] = load(a[kMomX + d] + c) * inv;
+            ud[d] = sel(lanes::abs(ud[d]) < kTinyVelocity, lanes::splat(0.0), ud[d]);
+            ke += ud[d] * ud[d];
+          }
+          const v4d vv = load(a[kVolume] + c) * inv;
+          const v4d eE = load(a[kEnergy] + c) * inv - 0.5 * ke, eA = load(a[kEint] + c) * inv;
+          const double ec = 0.0;
+          ok = ok & (vv > 0) & ~((eA - ec > 0) & (eE - ec < kMinEnergyShare * (eA - ec)));
+          if (!lanes::any(~ok)) {
+            for (int d = 0; d < DIM; ++d) lanes::store(u[d] + c, ud[d]);
+            lanes::store(v + c, vv);
+            lanes::store(e + c, eE);
+            const v4d t = mass * (eE + 0.5 * ke);
+            for (int l = 0; l < 4; ++l) audit_.localEnergy += t[l];
+            return;
+          }
+        }
+      }
+      for (int l = 0; l < 4; ++l) cell(c + l);
+    };
+    forOwnedRows(cellLanes, cell);
   };
   auto convert = [&](int r) {
     if (dim == 2) convertDim.template operator()<2>(r);
@@ -403,18 +475,36 @@ void IceSolver::advectFluids() {
           for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
             const double* F = Fm + fb.index(owned_.lo[0], j, k);  // the row's low faces
             double* out = sc + sb.index(owned_.lo[0], j, k);
-            for (int i = 0; i < owned_.length(0); ++i) {
+            int i = 0;
+            for (; i + 4 <= owned_.length(0); i += 4) {  // the lanes: the same operations
+              using lanes::v4d, lanes::load, lanes::sel;
+              const v4d lo = load(F + i), hi = load(F + i + up);
+              v4d o = load(out + i);
+              o = sel(lo < 0, o - lo, o);
+              lanes::store(out + i, sel(hi > 0, o + hi, o));
+            }
+            for (; i < owned_.length(0); ++i) {
               if (F[i] < 0) out[i] -= F[i];
               if (F[i + up] > 0) out[i] += F[i + up];
             }
           }
       }
-      for (std::size_t c = 0; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
+      std::size_t c = 0;
+      for (; c + 4 <= npts; c += 4) {  // the lanes: the same operations
+        const lanes::v4d o = lanes::load(sc + c), mx = kMaxOutflowFraction * lanes::load(ms + c);
+        lanes::store(sc + c, lanes::sel(o > mx, mx / o, lanes::splat(1.0)));
+      }
+      for (; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
       ghosts_->fill(outScale);
       auto& capped = adv_.capped[static_cast<std::size_t>(r)];
       capped.clear();
-      for (std::size_t c = 0; c < npts; ++c)
+      for (c = 0; c < npts; ++c) {
+        if (c + 4 <= npts && !lanes::any(lanes::load(sc + c) != 1.0)) {  // four at a time where all are 1
+          c += 3;
+          continue;
+        }
         if (sc[c] != 1.0) capped.push_back({static_cast<std::int64_t>(c), sc[c]});
+      }
     };
     auto restoreOutflowScale = [&](int r) {
       double* sc = outScale.data();
@@ -431,17 +521,30 @@ void IceSolver::advectFluids() {
       accumulators(m, a);
       const double *e = m.eint.data(), *v = m.spvolL.data();  // Lagrangian (ice_state.h)
       const auto u = core::components(m.vel);
-      for (const std::int64_t c : ownedCells_) {
-        const double mass = a[kMass][c];
-        double ke = 0;
+      // One cell (T double) or four (T lanes::v4d, the same operations) from c on.
+      auto cell = [&]<class T>(std::int64_t c) {
+        auto ld = [&](const double* f) -> T {
+          if constexpr (std::is_same_v<T, double>) return f[c];
+          else return lanes::load(f + c);
+        };
+        auto st = [&](double* f, T x) {
+          if constexpr (std::is_same_v<T, double>) f[c] = x;
+          else lanes::store(f + c, x);
+        };
+        const T mass = ld(a[kMass]);
+        T ke = T{} + 0.0;
         for (int d = 0; d < nd; ++d) {
-          a[kMomX + d][c] = mass * u[d][c];
-          ke += u[d][c] * u[d][c];
+          const T ud = ld(u[d]);
+          st(a[kMomX + d], mass * ud);
+          ke += ud * ud;
         }
-        a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
-        a[kVolume][c] = mass * v[c];
-        a[kEint][c] = mass * e[c];
-      }
+        const T ec = ld(e);
+        st(a[kEnergy], mass * (ec + 0.5 * ke));
+        st(a[kVolume], mass * ld(v));
+        st(a[kEint], mass * ec);
+      };
+      forOwnedRows([&](std::int64_t c) { cell.template operator()<lanes::v4d>(c); },
+                   [&](std::int64_t c) { cell.template operator()<double>(c); });
     };
     auto conserved = [&](int r) {
       if (dim == 2) conservedDim.template operator()<2>(r);
@@ -464,7 +567,9 @@ void IceSolver::advectFluids() {
       if (!entropyBound) return;
       const double* th = m.theta.data();
       bool alone = false;
-      for (std::size_t c = 0; c < npts && !alone; ++c) alone = singleFluid(th[c]);
+      std::size_t c = 0;
+      for (; c + 4 <= npts && !alone; c += 4) alone = lanes::any(lanes::load(th + c) >= 1.0 - kPresentFraction);  // singleFluid
+      for (; c < npts && !alone; ++c) alone = singleFluid(th[c]);
       if (alone) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
     };
 
@@ -545,18 +650,21 @@ void IceSolver::advectFluids() {
       return (t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0);
     };
     auto remCol = [&](int i) -> std::int64_t { return top == 0 ? (i & 1) : i - owned_.lo[0]; };
-    // Calls f(c, R) for every owned cell of slab s (c its stored index, R its sums).
-    auto forSlab = [&](int s, auto&& f) {
+    // Calls f4(c, R) for four consecutive owned cells of slab s along x (c the first's stored
+    // index, R its sums: the lanes) and f1(c, R) for one, every cell once, in forEach's order.
+    auto forSlabLanes = [&](int s, auto&& f4, auto&& f1) {
       const core::Box b = slab(s);
       for (int k = b.lo[2]; k <= b.hi[2]; ++k)
         for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
           double* R = rem + remRow(j, k);
           const std::int64_t c0 = sb.index(b.lo[0], j, k);
           if (top == 0) {
-            for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) f1(c0 + (i - b.lo[0]), R + remCol(i));
           } else {  // remCol(i) = i - lo
             double* Ri = R + remCol(b.lo[0]);
-            for (int i = b.lo[0]; i <= b.hi[0]; ++i, ++Ri) f(c0 + (i - b.lo[0]), Ri);
+            int i = b.lo[0];
+            for (; i + 3 <= b.hi[0]; i += 4, Ri += 4) f4(c0 + (i - b.lo[0]), Ri);
+            for (; i <= b.hi[0]; ++i, ++Ri) f1(c0 + (i - b.lo[0]), Ri);
           }
         }
     };
@@ -602,20 +710,7 @@ void IceSolver::advectFluids() {
                   }
             }
           }
-          auto apply = [&](double* acc, v4d flux) {
-            const v4d v = lam * flux;
-            if (d == 0) {
-              v4d a = load(acc + cR);
-              a = sel(nz, a + v, a);
-              a = sel(next(nz) & keep3, a - next(v), a);
-              store(acc + cR, a);
-              if (nz[0]) acc[cL] -= v[0];
-            } else {
-              const v4d aL = load(acc + cL), aR = load(acc + cR);
-              store(acc + cL, sel(nz, aL - v, aL));
-              store(acc + cR, sel(nz, aR + v, aR));
-            }
-          };
+          auto apply = [&](double* acc, v4d flux) { applyLanes(acc, lam * flux, nz, cL, cR, d == 0); };
           v4d ke = lanes::splat(0.0);
           for (int q = 0; q < DIM; ++q) {
             apply(P.a[kMomX + q], F * fu[q]);
@@ -738,7 +833,24 @@ void IceSolver::advectFluids() {
         for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
           for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
             std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) {
+            int i = fb.lo[0];
+            if (dim >= 2) {  // four faces at once (applyLanes); along x the inner faces only
+              const int jk = d == 1 ? j : k;
+              const bool ownL = d == 0 || jk > owned_.lo[d], ownR = d == 0 || jk <= owned_.hi[d];
+              const int i1 = d == 0 ? owned_.hi[0] : fb.hi[0];
+              if (d == 0) {  // the first face (a ghost on its low side) alone
+                const double F = Fm[fi];
+                if (F != 0) ma[cR] += (F > 0 ? sc[cR - sd] : sc[cR]) * F;
+                ++i, ++fi, ++cR;
+              }
+              for (; i + 3 <= i1; i += 4, fi += 4, cR += 4) {
+                const lanes::v4d F = lanes::load(Fm + fi);
+                const lanes::v4m nz = F != 0;
+                const lanes::v4d v = lanes::sel(F > 0, lanes::load(sc + cR - sd), lanes::load(sc + cR)) * F;
+                applyLanes(ma, v, nz, cR - sd, cR, d == 0, ownL, ownR);
+              }
+            }
+            for (; i <= fb.hi[0]; ++i, ++fi, ++cR) {
               const double F = Fm[fi];
               if (F == 0) continue;
               const std::int64_t cL = cR - sd;
@@ -769,10 +881,17 @@ void IceSolver::advectFluids() {
       auto row = [&](int d, int j, int k, int ihi) { pass2Row(P[d], d, j, k, owned_.lo[0], ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
         if (s <= owned_.hi[top]) {
-          forSlab(s, [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
+          auto init = [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
             R[kRemMass * rs] = ms[c];
             for (int q = 1; q < kRemSums; ++q) R[q * rs] = 0.0;
-          });
+          };
+          forSlabLanes(
+              s,
+              [&](std::int64_t c, double* R) {
+                lanes::store(R + kRemMass * rs, lanes::load(ms + c));
+                for (int q = 1; q < kRemSums; ++q) lanes::store(R + q * rs, lanes::splat(0.0));
+              },
+              init);
           if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
           if (dim == 3) {
             for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
@@ -789,14 +908,31 @@ void IceSolver::advectFluids() {
           for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, owned_.hi[0]);
         if (s == owned_.lo[top]) continue;
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
-        forSlab(s - 1, [&](std::int64_t c, const double* R) {
+        auto blend1 = [&](std::int64_t c, const double* R) {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
           const double b = positivityBlend(R, rs, eL[c] - ec, vL[c]);
           if (b < 1.0) {
             adv_.blends.push_back({c, b});
             ++positivityBlends_;
           }
-        });
+        };
+        // Four donors at once: blend1 only where one of positivityBlend's tests can lower b (the
+        // same operations; b is 1 exactly where none does). Without a cold energy (ec = 0).
+        auto blend4 = [&](std::int64_t c, const double* R) {
+          using lanes::v4d, lanes::v4m, lanes::load;
+          if (!cold) {
+            auto sum = [&](int q) { return load(R + q * rs); };
+            const v4d mr = sum(kRemMass), A = sum(kRemE), vD = load(vL + c);
+            const v4d C = (1.0 - kMinRemainderShare) * mr * (load(eL + c) - 0.0);
+            const v4d P2 = sum(kRemUx) * sum(kRemUx) + sum(kRemUy) * sum(kRemUy) + sum(kRemUz) * sum(kRemUz);
+            const v4d Cv = (1.0 - kMinRemainderShare) * mr * vD;
+            const v4m lower = ((C > 0) & ((A + 0.5 * sum(kRemU2) - C) * mr + 0.5 * P2 > 0)) | ((C > 0) & (-A > C)) |
+                              ((Cv > 0) & (lanes::abs(sum(kRemV)) > Cv));
+            if (!lanes::any((mr > 0) & lower)) return;
+          }
+          for (int l = 0; l < 4; ++l) blend1(c + l, R + l);
+        };
+        forSlabLanes(s - 1, blend4, blend1);
       }
 
       // At the outgoing faces of the few donors with a blend below 1, the difference between the
