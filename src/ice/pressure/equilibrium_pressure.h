@@ -100,6 +100,13 @@ class EquilibriumPressure {
   std::vector<std::int64_t> block_;
   std::vector<std::vector<double>> pHold_, rhoHold_;
   std::vector<std::int64_t> all_;
+  // The block's traces with an admissible carried state: (material, cell, p_own, carried density).
+  struct HoldCandidate {
+    std::size_t r;
+    std::int64_t c;
+    double p, rho;
+  };
+  std::vector<HoldCandidate> holdCand_;
   std::vector<std::pair<int, std::int64_t>> held_, cavitated_;
   std::vector<double> pCav_;  // per material: the cut-off (-inf: none)
   // Scratch over the active cells.
