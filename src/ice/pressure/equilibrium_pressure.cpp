@@ -4,6 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "ice/state/lanes.h"
+
+// Lane vectors (lanes.h) between this file's inline functions (-Wpsabi: see lanes.h).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace mpmice::ice {
 
 EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
@@ -278,7 +285,22 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       const double* rh = hold ? rhoHold_[r].data() : nullptr;
       const double* rr = rho[r];
       double* rm = rhoMicro[r];
-      for (std::size_t a = 0; a < na; ++a) {
+      std::size_t a = 0;
+      if (!ph)  // four slots at once (the lanes, lanes.h): the loop's operations, selects for its branches
+        for (; a + 4 <= na; a += 4) {
+          using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+          const std::int64_t* c = active_.data() + a;
+          const v4d m = {rr[c[0]], rr[c[1]], rr[c[2]], rr[c[3]]}, ra = load(ra_.data() + a);
+          for (int l = 0; l < 4; ++l) rm[c[l]] = ra[l];
+          const v4m present = ~(m <= 0), ok = ra > 0;
+          if (lanes::any(present & ~ok))
+            for (int l = 0; l < 4; ++l)
+              if (present[l] && !ok[l]) bad_[a + static_cast<std::size_t>(l)] = 1;
+          const v4d inv = 1.0 / ra, f = load(f_.data() + a), df = load(df_.data() + a);
+          lanes::store(f_.data() + a, sel(present & ok, f - m * inv, f));
+          lanes::store(df_.data() + a, sel(present & ok, df + m * inv * inv * load(da_.data() + a), df));
+        }
+      for (; a < na; ++a) {
         if (ph && pa_[a] < ph[active_[a] - c0_]) ra_[a] = rh[active_[a] - c0_], da_[a] = 0.0;  // held
         const double m = rr[active_[a]];
         rm[active_[a]] = ra_[a];
@@ -291,6 +313,15 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         f_[a] -= m * inv;
         df_[a] += m * inv * inv * da_[a];
       }
+    }
+    // The Newton steps pc - f / df, four at a time (read below only where taken).
+    next_.resize(std::max(next_.size(), na));
+    {
+      std::size_t a = 0;
+      for (; a + 4 <= na; a += 4)
+        lanes::store(next_.data() + a,
+                     lanes::load(pa_.data() + a) - lanes::load(f_.data() + a) / lanes::load(df_.data() + a));
+      for (; a < na; ++a) next_[a] = pa_[a] - f_[a] / df_[a];
     }
     std::size_t keep = 0;
     for (std::size_t a = 0; a < na; ++a) {
@@ -306,7 +337,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         continue;
       }
       if (f < 0) lo = pc; else hi = pc;
-      double next = (!bad_[a] && df_[a] > 0) ? pc - f / df_[a] : std::numeric_limits<double>::quiet_NaN();
+      double next = (!bad_[a] && df_[a] > 0) ? next_[a] : std::numeric_limits<double>::quiet_NaN();  // pc - f / df
       const double F = floor_[a];
       if (!(next > lo && next < hi)) {
         if (std::isfinite(lo) && std::isfinite(hi)) {  // bisect; geometrically across decades above the floor

@@ -111,7 +111,7 @@ class EquilibriumPressure {
   std::vector<double> pCav_;  // per material: the cut-off (-inf: none)
   // Scratch over the active cells.
   std::vector<std::int64_t> active_;
-  std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_;
+  std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_, next_;
   std::vector<double> fluidMass_;  // the trace rule: each active cell's fluid mass (per unit volume)
   std::vector<int> floorMat_;
   std::vector<char> bad_, cavFloor_;  // cavFloor_: F is a cavitating liquid's cut-off and f(F) < 0
