@@ -13,6 +13,15 @@
 
 namespace mpmice::ice {
 
+namespace {
+// Scratch of at least n entries (only the first n are written and read): never shrunk, so the
+// next block's first sweep does not zero it again.
+template <class T>
+void atLeast(std::vector<T>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+}  // namespace
+
 EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
                                          std::vector<bool> fluid, double traceMassFraction)
     : eos_(std::move(eos)), tol_(tolerance), maxIt_(maxIterations), fluid_(std::move(fluid)),
@@ -161,8 +170,8 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     all_ = active_;
   }
   for (std::size_t r = 0; r < nm; ++r) {
-    ea_.resize(na);
-    pf_.resize(na);
+    atLeast(ea_, na);
+    atLeast(pf_, na);
     for (std::size_t a = 0; a < na; ++a) ea_[a] = e[r][active_[a]];
     eos_[r]->pressureFloor(na, ea_.data(), pf_.data());
     const double* ph = hold ? pHold_[r].data() : nullptr;
@@ -264,10 +273,10 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   // Per active slot the bracket is kept in lo_/hi_ (and the floor in floor_), indexed by slot
   // (compacted along with active_). Every iterate lies strictly inside (lo, hi).
   for (int it = 0; na > 0; ++it) {
-    pa_.resize(na);
-    f_.resize(na);
-    df_.resize(na);
-    bad_.resize(na);
+    atLeast(pa_, na);
+    atLeast(f_, na);
+    atLeast(df_, na);
+    atLeast(bad_, na);
     for (std::size_t a = 0; a < na; ++a) {
       pa_[a] = p[active_[a]];
       f_[a] = 1.0;
@@ -275,9 +284,9 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       bad_[a] = 0;
     }
     for (std::size_t r = 0; r < nm; ++r) {
-      ea_.resize(na);
-      ra_.resize(na);
-      da_.resize(na);
+      atLeast(ea_, na);
+      atLeast(ra_, na);
+      atLeast(da_, na);
       const double* er = e[r];
       for (std::size_t a = 0; a < na; ++a) ea_[a] = er[active_[a]];
       eos_[r]->density(na, pa_.data(), ea_.data(), ra_.data(), da_.data());
@@ -315,7 +324,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       }
     }
     // The Newton steps pc - f / df, four at a time (read below only where taken).
-    next_.resize(std::max(next_.size(), na));
+    atLeast(next_, na);
     {
       std::size_t a = 0;
       for (; a + 4 <= na; a += 4)
