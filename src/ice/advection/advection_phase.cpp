@@ -25,11 +25,6 @@
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
-// Lane vectors (lanes.h) between this file's inline functions (-Wpsabi: see lanes.h).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 using core::forEach;

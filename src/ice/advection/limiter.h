@@ -9,11 +9,6 @@
 
 #include "ice/state/lanes.h"
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 enum class Limiter { Minmod, VanLeer, Superbee };
@@ -71,7 +66,3 @@ inline double limitedSlope(Limiter l, double dl, double dr) {
 }
 
 }  // namespace mpmice::ice
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif

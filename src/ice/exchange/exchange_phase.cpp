@@ -18,11 +18,6 @@
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
-// Lane vectors (lanes.h) between this file's inline lambdas (-Wpsabi: see lanes.h).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 void IceSolver::exchange() {
@@ -52,6 +47,17 @@ void IceSolver::exchange() {
               m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
+  // The kinetic energy the drag dissipates D [J] and the heat capacity C = sum m cv [J/K] of one
+  // cell after its momentum exchange (T double; D, C start at 0), or of four (T lanes::v4d).
+  auto dragHeat = [&]<class T>(int n, int nd, const T* x, const T* x0, const T* mass, T& D, T& C) {
+    for (int r = 0; r < n; ++r) {
+      for (int d = 0; d < nd; ++d) {
+        const T un = x[d * n + r], uo = x0[d * n + r];
+        D += 0.5 * mass[r] * (uo - un) * (uo + un);
+      }
+      C += mass[r] * ptr[r].cv;
+    }
+  };
   // One cell (stored index c, owned index o). NM, DIM > 0: the number of materials and the mesh's
   // dimension fixed at compile time (the small loops unroll; the same operations in the same
   // order as with the run-time counts, 0).
@@ -71,14 +77,8 @@ void IceSolver::exchange() {
       }
       exchangeCouplings(n, dtV, K_.data(), th, w);
       pointwiseExchange(n, s, w, x, nd);
-      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
-      for (int r = 0; r < n; ++r) {
-        for (int d = 0; d < nd; ++d) {
-          const double un = x[d * n + r], uo = x0[d * n + r];
-          D += 0.5 * mass[r] * (uo - un) * (uo + un);
-        }
-        C += mass[r] * ptr[r].cv;
-      }
+      double D = 0, C = 0;
+      dragHeat(n, nd, x, x0, mass, D, C);
       for (int r = 0; r < n; ++r) {
         const Ptr& Q = ptr[r];
         const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
@@ -123,13 +123,7 @@ void IceSolver::exchange() {
       exchangeCouplingsLanes<NM>(dtV, K_.data(), th, w);
       pointwiseExchangeLanes<NM, DIM>(s, w, x);
       v4d D = splat(0.0), C = splat(0.0);
-      for (int r = 0; r < NM; ++r) {
-        for (int d = 0; d < DIM; ++d) {
-          const v4d un = x[d * NM + r], uo = x0[d * NM + r];
-          D += 0.5 * mass[r] * (uo - un) * (uo + un);
-        }
-        C += mass[r] * ptr[r].cv;
-      }
+      dragHeat(NM, DIM, x, x0, mass, D, C);
       for (int r = 0; r < NM; ++r) {
         const Ptr& Q = ptr[r];
         const v4d de = sel(C > 0, D * ptr[r].cv / C, splat(0.0));

@@ -16,11 +16,6 @@
 #include "ice/state/ice_state.h"
 #include "ice/state/lanes.h"
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 /// theta_r,f and v_r,f of every material at the face between the stored cells cL and cR (linear
@@ -63,7 +58,3 @@ inline void faceExchangeLanes(double dt, const double* K, const lanes::v4d* thet
 }
 
 }  // namespace mpmice::ice
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif

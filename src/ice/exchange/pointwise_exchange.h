@@ -14,14 +14,23 @@
 
 #include "ice/state/lanes.h"
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 inline constexpr int kMaxMaterials = 16;
+
+/// b = s x for each of the nrhs right-hand sides (x[c * n + r]), and row k's GTH pivot
+/// s_k + sum_{j > k} w_kj (formed without subtraction); T: double, or lanes::v4d for the lanes.
+template <class T>
+inline void scaledRightHandSides(int n, int nrhs, const T* s, const T* x, T* b) {
+  for (int c = 0; c < nrhs; ++c)
+    for (int r = 0; r < n; ++r) b[c * n + r] = s[r] * x[c * n + r];
+}
+template <class T>
+inline T gthPivot(int n, int k, const T* s, const T* w) {
+  T a = s[k];
+  for (int j = k + 1; j < n; ++j) a += w[k * n + j];
+  return a;
+}
 
 /// The solve with n = N and nrhs = NRHS fixed at compile time where they are positive (the loops
 /// then unroll; the same operations in the same order as with run-time counts).
@@ -31,11 +40,9 @@ inline void pointwiseExchangeFixed(int n, double* s, double* w, double* x, int n
   if constexpr (NRHS > 0) nrhs = NRHS;
   double b[3 * kMaxMaterials];
   double piv[kMaxMaterials];
-  for (int c = 0; c < nrhs; ++c)
-    for (int r = 0; r < n; ++r) b[c * n + r] = s[r] * x[c * n + r];
+  scaledRightHandSides(n, nrhs, s, x, b);
   for (int k = 0; k < n; ++k) {
-    double a = s[k];
-    for (int j = k + 1; j < n; ++j) a += w[k * n + j];
+    const double a = gthPivot(n, k, s, w);
     piv[k] = a;
     if (!(a > 0)) continue;  // absent and decoupled
     const double inv = 1.0 / a;
@@ -95,11 +102,9 @@ inline void pointwiseExchangeLanes(lanes::v4d* s, lanes::v4d* w, lanes::v4d* x) 
   static_assert(N > 0 && N <= kMaxMaterials && NRHS > 0 && NRHS <= 3);
   using lanes::v4d, lanes::v4m, lanes::sel;
   v4d b[NRHS * N], piv[N];
-  for (int c = 0; c < NRHS; ++c)
-    for (int r = 0; r < N; ++r) b[c * N + r] = s[r] * x[c * N + r];
+  scaledRightHandSides(N, NRHS, s, x, b);
   for (int k = 0; k < N; ++k) {
-    v4d a = s[k];
-    for (int j = k + 1; j < N; ++j) a += w[k * N + j];
+    const v4d a = gthPivot(N, k, s, w);
     piv[k] = a;
     if (k + 1 == N) break;
     const v4m on = a > 0;
@@ -132,7 +137,3 @@ inline void exchangeCouplingsLanes(double scale, const double* K, const lanes::v
 }
 
 }  // namespace mpmice::ice
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif

@@ -20,11 +20,6 @@
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
 
-// Lane vectors (lanes.h) between this file's inline lambdas (-Wpsabi: see lanes.h).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 using core::forEach;
@@ -203,7 +198,6 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
   else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
   else sweep.template operator()<0, 0>();
 }
-
 
 void IceSolver::computeFaceVelocities() {
   const int dim = mesh_.dim();
@@ -404,7 +398,6 @@ void IceSolver::computeFaceVelocities() {
     else sweep.template operator()<0>();
   }
 }
-
 
 double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du) {
   if (!(du < 0) || !(zL > 0 && zR > 0)) return 0.0;

@@ -6,11 +6,6 @@
 
 #include "ice/state/lanes.h"
 
-// Lane vectors (lanes.h) between this file's inline functions (-Wpsabi: see lanes.h).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 namespace mpmice::ice {
 
 namespace {
