@@ -442,7 +442,8 @@ void IceSolver::advectFluids() {
             for (; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
           }
       };
-      if (nm == 2) sweep1.template operator()<2>();
+      if (nm == 1) sweep1.template operator()<1>();
+      else if (nm == 2) sweep1.template operator()<2>();
       else if (nm == 3) sweep1.template operator()<3>();
       else sweep1.template operator()<0>();
     }

@@ -192,7 +192,10 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
         for (; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
-  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
+  if (nm == 1 && dim == 1) sweep.template operator()<1, 1>();
+  else if (nm == 1 && dim == 2) sweep.template operator()<1, 2>();
+  else if (nm == 1 && dim == 3) sweep.template operator()<1, 3>();
+  else if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
   else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
   else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
   else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
@@ -393,7 +396,8 @@ void IceSolver::computeFaceVelocities() {
           for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
         }
     };
-    if (nm == 2) sweep.template operator()<2>();
+    if (nm == 1) sweep.template operator()<1>();
+    else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
   }
@@ -541,7 +545,8 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
           for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
         }
     };
-    if (nm == 2) sweep.template operator()<2>();
+    if (nm == 1) sweep.template operator()<1>();
+    else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
   }
