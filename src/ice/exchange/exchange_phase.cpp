@@ -17,6 +17,7 @@
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/fixed_counts.h"
 
 namespace mpmice::ice {
 
@@ -165,11 +166,7 @@ void IceSolver::exchange() {
         for (; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
-  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
-  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
-  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
-  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
-  else sweep.template operator()<0, 0>();
+  withFixedCounts<false>(nm, dim, sweep);
   relaxEmbeddedFluidTemperatures();
 }
 

@@ -18,6 +18,7 @@
 #include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/fixed_counts.h"
 #include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
@@ -192,14 +193,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
         for (; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
-  if (nm == 1 && dim == 1) sweep.template operator()<1, 1>();
-  else if (nm == 1 && dim == 2) sweep.template operator()<1, 2>();
-  else if (nm == 1 && dim == 3) sweep.template operator()<1, 3>();
-  else if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
-  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
-  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
-  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
-  else sweep.template operator()<0, 0>();
+  withFixedCounts<true>(nm, dim, sweep);
 }
 
 void IceSolver::computeFaceVelocities() {
