@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
@@ -47,21 +48,23 @@ enum RemSum : int { kRemMass, kRemE, kRemU2, kRemUx, kRemUy, kRemUz, kRemV, kRem
 // between two isentropes), and the internal energy of a sum of parts is at least the sum of
 // theirs (|P|^2 / 2m is convex and of degree 1), so the cell's e and v after advection are
 // positive by construction, whatever the face values.
+// R: the donor's first sum, the others rs apart (AdvectionScratch::remainder: one array per sum).
 // Inlined: one per cell.
-[[gnu::always_inline]] inline double positivityBlend(const double* R, double eThermal, double vD) {
-  const double mr = R[kRemMass];
+[[gnu::always_inline]] inline double positivityBlend(const double* R, std::int64_t rs, double eThermal, double vD) {
+  auto sum = [&](int q) { return R[q * rs]; };
+  const double mr = sum(kRemMass);
   if (!(mr > 0)) return 1.0;
   double b = 1.0;
   const double C = (1.0 - kMinRemainderShare) * mr * eThermal;
-  const double A = R[kRemE];
-  const double P2 = R[kRemUx] * R[kRemUx] + R[kRemUy] * R[kRemUy] + R[kRemUz] * R[kRemUz];
-  if (C > 0 && (A + 0.5 * R[kRemU2] - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
-    const double B = R[kRemU2] + P2 / mr;
+  const double A = sum(kRemE);
+  const double P2 = sum(kRemUx) * sum(kRemUx) + sum(kRemUy) * sum(kRemUy) + sum(kRemUz) * sum(kRemUz);
+  if (C > 0 && (A + 0.5 * sum(kRemU2) - C) * mr + 0.5 * P2 > 0) {  // I(1) below the share (no division)
+    const double B = sum(kRemU2) + P2 / mr;
     b = std::min(b, 2.0 * C / (A + std::sqrt(A * A + 2.0 * B * C)));
   }
   if (C > 0 && -A > C) b = std::min(b, C / -A);
   const double Cv = (1.0 - kMinRemainderShare) * mr * vD;
-  if (Cv > 0 && std::abs(R[kRemV]) > Cv) b = std::min(b, Cv / std::abs(R[kRemV]));
+  if (Cv > 0 && std::abs(sum(kRemV)) > Cv) b = std::min(b, Cv / std::abs(sum(kRemV)));
   return b;
 }
 
@@ -86,6 +89,60 @@ struct FaceValue {
     else return q0 + w * limitedSlope<L>(q0 - f[D - sd], f[D + sd] - q0);
   }
 };
+// FaceValue at four faces of a row (the lanes, lanes.h; cL: the first face's low cell, the others
+// follow it): the donor's value and the two around it are selected per lane from the four cells
+// cL - sd, cL, cR, cR + sd; the same operations as FaceValue.
+template <bool Second, Limiter L>
+struct FaceValueLanes {
+  std::int64_t cL, sd;
+  lanes::v4m up;  // uf > 0: the donor is cL
+  lanes::v4d w;
+  FaceValueLanes(Recon<Second, L>, lanes::v4d uf, std::int64_t cL_, std::int64_t sd_, double dt, double dx)
+      : cL(cL_), sd(sd_), up(uf > 0),
+        w(0.5 * lanes::sel(uf > 0, lanes::splat(1.0), lanes::splat(-1.0)) * (1.0 - lanes::abs(uf) * dt / dx)) {}
+  // The donor's value f[D].
+  [[gnu::always_inline]] lanes::v4d donor(const double* f) const {
+    return lanes::sel(up, lanes::load(f + cL), lanes::load(f + cL + sd));
+  }
+  [[gnu::always_inline]] lanes::v4d operator()(const double* f) const {
+    using lanes::load, lanes::sel;
+    const lanes::v4d a = load(f + cL), b = load(f + cL + sd);
+    const lanes::v4d q0 = sel(up, a, b);
+    if constexpr (!Second) return q0;
+    else {
+      const lanes::v4d qm = sel(up, load(f + cL - sd), a), qp = sel(up, b, load(f + cL + 2 * sd));
+      return q0 + w * limitedSlopeLanes<L>(q0 - qm, qp - q0);
+    }
+  }
+};
+
+// acc[cL] -= v and acc[cR] += v at the four faces (lanes) with nz set, cL = cR - sd, each cell's
+// terms in the order of the face-by-face loop: along a row (alongRow, sd = 1) lane l's high cell is
+// lane l + 1's low cell, and a cell's low face's term (+=) comes before its high face's (-=).
+// ownL, ownR: whether the low and high cells take their terms (across rows only).
+[[gnu::always_inline]] inline void applyLanes(double* acc, lanes::v4d v, lanes::v4m nz, std::int64_t cL,
+                                              std::int64_t cR, bool alongRow, bool ownL = true, bool ownR = true) {
+  using lanes::v4d, lanes::load, lanes::store, lanes::sel;
+  if (alongRow) {
+    const lanes::v4m keep3 = {-1, -1, -1, 0};
+    auto next = [](auto x) { return __builtin_shufflevector(x, x, 1, 2, 3, 3); };  // lane l + 1's
+    v4d a = load(acc + cR);
+    a = sel(nz, a + v, a);
+    a = sel(next(nz) & keep3, a - next(v), a);
+    store(acc + cR, a);
+    if (nz[0]) acc[cL] -= v[0];
+  } else {
+    if (ownL) {
+      const v4d aL = load(acc + cL);
+      store(acc + cL, sel(nz, aL - v, aL));
+    }
+    if (ownR) {
+      const v4d aR = load(acc + cR);
+      store(acc + cR, sel(nz, aR + v, aR));
+    }
+  }
+}
+
 // The isentrope through each stored cell's Lagrangian state (v_c, e_c) of one fluid, from the local
 // stiffened-gas fit of its EOS, p = Gamma e / v - P: Gamma = v dp/de at fixed v and P from the
 // cell's own pressure, both from two batch pressure calls, at e and 2 e (exact for the ideal and
@@ -181,6 +238,17 @@ void IceSolver::advectFluids() {
     a[kVolume] = m.spvol.data();
     a[kEint] = adv_.eint.data();
   };
+  // The owned cells in forEach's order (ownedCells_), by rows: f4(c) for the four cells c .. c + 3
+  // (the lanes), f1(c) for one (the rest of a row).
+  auto forOwnedRows = [&](auto&& f4, auto&& f1) {
+    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+        std::int64_t c = sb.index(owned_.lo[0], j, k);
+        int i = owned_.lo[0];
+        for (; i + 3 <= owned_.hi[0]; i += 4, c += 4) f4(c);
+        for (; i <= owned_.hi[0]; ++i, ++c) f1(c);
+      }
+  };
   // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
   // velocity, specific volume and internal energy (its velocity and energy, the face values'
   // sources, held the Lagrangian values until here).
@@ -197,7 +265,7 @@ void IceSolver::advectFluids() {
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
     const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-    for (const std::int64_t c : ownedCells_) {
+    auto cell = [&](std::int64_t c) {
       const double mass = a[kMass][c];
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
@@ -206,7 +274,7 @@ void IceSolver::advectFluids() {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
         v[c] = vL[c];
-        continue;
+        return;
       }
       const double inv = 1.0 / mass;
       double ke = 0;
@@ -236,7 +304,40 @@ void IceSolver::advectFluids() {
         e[c] = eE;
       }
       audit_.localEnergy += mass * (e[c] + 0.5 * ke);
-    }
+    };
+    // cell() at the four cells c .. c + 3 (the lanes, the same operations) where each of them is
+    // present, keeps its volume and needs no energy fallback (without a cold energy); otherwise
+    // cell() one after the other. The audit's sum taken cell by cell in order.
+    auto cellLanes = [&](std::int64_t c) {
+      using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+      if constexpr (DIM > 0) {
+        if (!cold) {
+          const v4d mass = load(a[kMass] + c);
+          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(adv_.fluidMass.data() + c));
+          const v4d inv = 1.0 / mass;
+          v4d ud[DIM], ke = lanes::splat(0.0);
+          for (int d = 0; d < DIM; ++d) {
+            ud[d] = load(a[kMomX + d] + c) * inv;
+            ud[d] = sel(lanes::abs(ud[d]) < kTinyVelocity, lanes::splat(0.0), ud[d]);
+            ke += ud[d] * ud[d];
+          }
+          const v4d vv = load(a[kVolume] + c) * inv;
+          const v4d eE = load(a[kEnergy] + c) * inv - 0.5 * ke, eA = load(a[kEint] + c) * inv;
+          const double ec = 0.0;
+          ok = ok & (vv > 0) & ~((eA - ec > 0) & (eE - ec < kMinEnergyShare * (eA - ec)));
+          if (!lanes::any(~ok)) {
+            for (int d = 0; d < DIM; ++d) lanes::store(u[d] + c, ud[d]);
+            lanes::store(v + c, vv);
+            lanes::store(e + c, eE);
+            const v4d t = mass * (eE + 0.5 * ke);
+            for (int l = 0; l < 4; ++l) audit_.localEnergy += t[l];
+            return;
+          }
+        }
+      }
+      for (int l = 0; l < 4; ++l) cell(c + l);
+    };
+    forOwnedRows(cellLanes, cell);
   };
   auto convert = [&](int r) {
     if (dim == 2) convertDim.template operator()<2>(r);
@@ -299,15 +400,50 @@ void IceSolver::advectFluids() {
           P.flux[fi] = fm[r] * th2[r] * scale;
         }
       };
+      // face1 at the four faces fi .. fi + 3 (the lanes, lanes.h): the same operations in the
+      // same order, a face with uf = 0 or a zero volume fraction a select of what face1 leaves.
+      auto face1Lanes = [&]<int NM>(std::int64_t fi, std::int64_t cR) __attribute__((always_inline)) {
+        using lanes::v4d, lanes::v4m, lanes::load, lanes::sel, lanes::splat;
+        const std::int64_t cL = cR - sd;
+        const v4d zero = splat(0.0);
+        v4d th1[NM], th2[NM], fm[NM];
+        v4d s1 = zero, s2 = zero;
+        for (int r = 0; r < NM; ++r) {
+          const Ptr& P = ptr[r];
+          th1[r] = th2[r] = fm[r] = zero;
+          if (P.skip) continue;
+          const v4d uf = load(P.uf + fi);
+          const v4m on = uf != 0;
+          const FaceValueLanes face(rc, uf, cL, sd, dt, dx);
+          const v4d sgn = sel(uf > 0, splat(1.0), splat(-1.0));
+          th1[r] = sel(on, face.donor(P.th), zero);
+          th2[r] = sel(on, face(P.th), zero);
+          s1 = sel(on, s1 + th1[r], s1);
+          s2 = sel(on, s2 + th2[r], s2);
+          fm[r] = sel(on, sgn * lanes::abs(uf) * dt * A / face(P.sv), zero);
+        }
+        const v4d target = solidFaces != nullptr ? sel(s1 > 0, 1.0 - load(solidFaces->data() + fi), s1) : s1;
+        const v4d scale = sel(s2 > 0, target / s2, zero);
+        for (int r = 0; r < NM; ++r) {
+          const Ptr& P = ptr[r];
+          if (P.skip) continue;
+          const v4m none = (th1[r] == 0) & (th2[r] == 0);
+          lanes::store(P.flux + fi, sel(none, zero, fm[r] * th2[r] * scale));
+        }
+      };
       // The faces in forEach's order, by rows (flat indices along each row).
       auto sweep1 = [&]<int NM>() {
         for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
           for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
             std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
+            int i = fb.lo[0];
+            if constexpr (NM > 0)
+              for (; i + 3 <= fb.hi[0]; i += 4, fi += 4, cR += 4) face1Lanes.template operator()<NM>(fi, cR);
+            for (; i <= fb.hi[0]; ++i, ++fi, ++cR) face1.template operator()<NM>(fi, cR);
           }
       };
-      if (nm == 2) sweep1.template operator()<2>();
+      if (nm == 1) sweep1.template operator()<1>();
+      else if (nm == 2) sweep1.template operator()<2>();
       else if (nm == 3) sweep1.template operator()<3>();
       else sweep1.template operator()<0>();
     }
@@ -335,18 +471,36 @@ void IceSolver::advectFluids() {
           for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
             const double* F = Fm + fb.index(owned_.lo[0], j, k);  // the row's low faces
             double* out = sc + sb.index(owned_.lo[0], j, k);
-            for (int i = 0; i < owned_.length(0); ++i) {
+            int i = 0;
+            for (; i + 4 <= owned_.length(0); i += 4) {  // the lanes: the same operations
+              using lanes::v4d, lanes::load, lanes::sel;
+              const v4d lo = load(F + i), hi = load(F + i + up);
+              v4d o = load(out + i);
+              o = sel(lo < 0, o - lo, o);
+              lanes::store(out + i, sel(hi > 0, o + hi, o));
+            }
+            for (; i < owned_.length(0); ++i) {
               if (F[i] < 0) out[i] -= F[i];
               if (F[i + up] > 0) out[i] += F[i + up];
             }
           }
       }
-      for (std::size_t c = 0; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
+      std::size_t c = 0;
+      for (; c + 4 <= npts; c += 4) {  // the lanes: the same operations
+        const lanes::v4d o = lanes::load(sc + c), mx = kMaxOutflowFraction * lanes::load(ms + c);
+        lanes::store(sc + c, lanes::sel(o > mx, mx / o, lanes::splat(1.0)));
+      }
+      for (; c < npts; ++c) sc[c] = sc[c] > kMaxOutflowFraction * ms[c] ? kMaxOutflowFraction * ms[c] / sc[c] : 1.0;
       ghosts_->fill(outScale);
       auto& capped = adv_.capped[static_cast<std::size_t>(r)];
       capped.clear();
-      for (std::size_t c = 0; c < npts; ++c)
+      for (c = 0; c < npts; ++c) {
+        if (c + 4 <= npts && !lanes::any(lanes::load(sc + c) != 1.0)) {  // four at a time where all are 1
+          c += 3;
+          continue;
+        }
         if (sc[c] != 1.0) capped.push_back({static_cast<std::int64_t>(c), sc[c]});
+      }
     };
     auto restoreOutflowScale = [&](int r) {
       double* sc = outScale.data();
@@ -363,17 +517,30 @@ void IceSolver::advectFluids() {
       accumulators(m, a);
       const double *e = m.eint.data(), *v = m.spvolL.data();  // Lagrangian (ice_state.h)
       const auto u = core::components(m.vel);
-      for (const std::int64_t c : ownedCells_) {
-        const double mass = a[kMass][c];
-        double ke = 0;
+      // One cell (T double) or four (T lanes::v4d, the same operations) from c on.
+      auto cell = [&]<class T>(std::int64_t c) {
+        auto ld = [&](const double* f) -> T {
+          if constexpr (std::is_same_v<T, double>) return f[c];
+          else return lanes::load(f + c);
+        };
+        auto st = [&](double* f, T x) {
+          if constexpr (std::is_same_v<T, double>) f[c] = x;
+          else lanes::store(f + c, x);
+        };
+        const T mass = ld(a[kMass]);
+        T ke = T{} + 0.0;
         for (int d = 0; d < nd; ++d) {
-          a[kMomX + d][c] = mass * u[d][c];
-          ke += u[d][c] * u[d][c];
+          const T ud = ld(u[d]);
+          st(a[kMomX + d], mass * ud);
+          ke += ud * ud;
         }
-        a[kEnergy][c] = mass * (e[c] + 0.5 * ke);
-        a[kVolume][c] = mass * v[c];
-        a[kEint][c] = mass * e[c];
-      }
+        const T ec = ld(e);
+        st(a[kEnergy], mass * (ec + 0.5 * ke));
+        st(a[kVolume], mass * ld(v));
+        st(a[kEint], mass * ec);
+      };
+      forOwnedRows([&](std::int64_t c) { cell.template operator()<lanes::v4d>(c); },
+                   [&](std::int64_t c) { cell.template operator()<double>(c); });
     };
     auto conserved = [&](int r) {
       if (dim == 2) conservedDim.template operator()<2>(r);
@@ -396,7 +563,9 @@ void IceSolver::advectFluids() {
       if (!entropyBound) return;
       const double* th = m.theta.data();
       bool alone = false;
-      for (std::size_t c = 0; c < npts && !alone; ++c) alone = singleFluid(th[c]);
+      std::size_t c = 0;
+      for (; c + 4 <= npts && !alone; c += 4) alone = lanes::any(lanes::load(th + c) >= 1.0 - kPresentFraction);  // singleFluid
+      for (; c < npts && !alone; ++c) alone = singleFluid(th[c]);
       if (alone) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
     };
 
@@ -467,26 +636,31 @@ void IceSolver::advectFluids() {
     adv_.remainder.resize(static_cast<std::size_t>(2 * slabSize * kRemSums));
     adv_.blends.clear();
     double* rem = adv_.remainder.data();
-    // An owned cell (i, j, k)'s sums: rem + remRow(j, k) + remCol(i).
+    // An owned cell (i, j, k)'s sums: R = rem + remRow(j, k) + remCol(i), sum q at R[q rs] (one
+    // array of the two slabs per sum: a row's cells are consecutive in each, for the lanes).
+    const std::int64_t rs = 2 * slabSize;
     const std::int64_t nx = owned_.length(0);
     auto remRow = [&](int j, int k) -> std::int64_t {
       if (top == 0) return 0;
       const int t = top == 1 ? j : k;
-      return ((t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0)) * kRemSums;
+      return (t & 1) * slabSize + (top == 2 ? nx * (j - owned_.lo[1]) : 0);
     };
-    auto remCol = [&](int i) -> std::int64_t { return (top == 0 ? (i & 1) : i - owned_.lo[0]) * kRemSums; };
-    // Calls f(c, R) for every owned cell of slab s (c its stored index, R its sums).
-    auto forSlab = [&](int s, auto&& f) {
+    auto remCol = [&](int i) -> std::int64_t { return top == 0 ? (i & 1) : i - owned_.lo[0]; };
+    // Calls f4(c, R) for four consecutive owned cells of slab s along x (c the first's stored
+    // index, R its sums: the lanes) and f1(c, R) for one, every cell once, in forEach's order.
+    auto forSlabLanes = [&](int s, auto&& f4, auto&& f1) {
       const core::Box b = slab(s);
       for (int k = b.lo[2]; k <= b.hi[2]; ++k)
         for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
           double* R = rem + remRow(j, k);
           const std::int64_t c0 = sb.index(b.lo[0], j, k);
           if (top == 0) {
-            for (int i = b.lo[0]; i <= b.hi[0]; ++i) f(c0 + (i - b.lo[0]), R + remCol(i));
-          } else {  // remCol(i) = (i - lo) kRemSums
+            for (int i = b.lo[0]; i <= b.hi[0]; ++i) f1(c0 + (i - b.lo[0]), R + remCol(i));
+          } else {  // remCol(i) = i - lo
             double* Ri = R + remCol(b.lo[0]);
-            for (int i = b.lo[0]; i <= b.hi[0]; ++i, Ri += kRemSums) f(c0 + (i - b.lo[0]), Ri);
+            int i = b.lo[0];
+            for (; i + 3 <= b.hi[0]; i += 4, Ri += 4) f4(c0 + (i - b.lo[0]), Ri);
+            for (; i <= b.hi[0]; ++i, ++Ri) f1(c0 + (i - b.lo[0]), Ri);
           }
         }
     };
@@ -496,12 +670,91 @@ void IceSolver::advectFluids() {
     auto pass2Faces = [&]<bool Inner, int DIM>(const FluxPtrs& P, int d, int j, int k, int ilo, int ihi) {
       static_assert(DIM > 0);
       constexpr int tp = DIM - 1;  // top
-      auto col = [&](int ii) -> std::int64_t { return (tp == 0 ? (ii & 1) : ii - owned_.lo[0]) * kRemSums; };
+      auto col = [&](int ii) -> std::int64_t { return tp == 0 ? (ii & 1) : ii - owned_.lo[0]; };
       const int lo = owned_.lo[d], hi = owned_.hi[d];
       std::int64_t fi = P.fb.index(ilo, j, k), cR = sb.index(ilo, j, k);
       // The sums' rows of the cells on the high and the low side (owned rows only are read).
       const std::int64_t rowR = remRow(j, k), rowL = d == 0 ? rowR : remRow(j - (d == 1), k - (d == 2));
-      for (int i = ilo; i <= ihi; ++i, ++fi, ++cR) {
+      int i = ilo;
+      if constexpr (Inner && DIM >= 2) {
+        // Four faces at once (the lanes, lanes.h): the loop below's operations, a face with F = 0
+        // a select of what it leaves. Along x lane l's high cell is lane l + 1's low cell: each
+        // cell's terms in the loop's order, its low face's (+=) before its high face's (-=).
+        using lanes::v4d, lanes::v4m, lanes::load, lanes::store, lanes::sel;
+        const v4m keep3 = {-1, -1, -1, 0};
+        auto next = [](auto v) { return __builtin_shufflevector(v, v, 1, 2, 3, 3); };  // lane l + 1's
+        for (; i + 3 <= ihi; i += 4, fi += 4, cR += 4) {
+          const v4d F = load(P.Fm + fi);
+          const v4m nz = F != 0;
+          if (!lanes::any(nz)) continue;
+          const std::int64_t cL = cR - P.sd;
+          const v4d lam = sel(F > 0, load(P.sc + cL), load(P.sc + cR));
+          const FaceValueLanes face(rc, load(P.uf + fi), cL, P.sd, dt, P.dx);
+          v4d fu[DIM];
+          for (int q = 0; q < DIM; ++q) fu[q] = face(P.u[q]);
+          const v4d fv = face(P.vL);
+          v4d fe = face(P.eL);
+          if constexpr (Second) {  // faceStateDim's entropy bound, lane by lane where it applies
+            if (entropyBound) {
+              const v4d tD = face.donor(P.th), tO = sel(face.up, load(P.th + cR), load(P.th + cL));
+              const v4m b = nz & (tD >= 1.0 - kPresentFraction) & (tO >= 1.0 - kPresentFraction);  // singleFluid
+              if (lanes::any(b))
+                for (int l = 0; l < 4; ++l)
+                  if (b[l]) {
+                    const std::int64_t D = face.up[l] ? cL + l : cR + l, O = face.up[l] ? cR + l : cL + l;
+                    fe[l] = entropyBounded(fe[l], fv[l], D, O, P.eL, P.vL, P.isG, P.isP);
+                  }
+            }
+          }
+          auto apply = [&](double* acc, v4d flux) { applyLanes(acc, lam * flux, nz, cL, cR, d == 0); };
+          v4d ke = lanes::splat(0.0);
+          for (int q = 0; q < DIM; ++q) {
+            apply(P.a[kMomX + q], F * fu[q]);
+            ke += fu[q] * fu[q];
+          }
+          apply(P.a[kMass], F);
+          apply(P.a[kEnergy], F * (fe + 0.5 * ke));
+          apply(P.a[kVolume], F * fv);
+          apply(P.a[kEint], F * fe);
+          // The donors' sums: lanes with the donor cL (dL) or cR (dR); nt terms t added (or
+          // subtracted) to sum q in order.
+          const v4d w = lam * lanes::abs(F);
+          const v4m dL = nz & face.up, dR = nz & ~face.up;
+          const std::int64_t sR = rowR + col(i), sL = rowL + col(i - (d == 0));
+          auto sums = [&](int q, const v4d* t, int nt, bool sub) {
+            double* Rq = rem + q * rs;
+            auto add = [&](v4d a, v4d x) { return sub ? a - x : a + x; };
+            if (d == 0) {  // sL = sR - 1
+              v4d a = load(Rq + sR);
+              for (int n = 0; n < nt; ++n) a = sel(dR, add(a, t[n]), a);
+              const v4m mL = next(dL) & keep3;
+              for (int n = 0; n < nt; ++n) a = sel(mL, add(a, next(t[n])), a);
+              store(Rq + sR, a);
+              if (dL[0])
+                for (int n = 0; n < nt; ++n) Rq[sL] = sub ? Rq[sL] - t[n][0] : Rq[sL] + t[n][0];
+            } else {
+              v4d aR = load(Rq + sR), aL = load(Rq + sL);
+              for (int n = 0; n < nt; ++n) aR = sel(dR, add(aR, t[n]), aR), aL = sel(dL, add(aL, t[n]), aL);
+              store(Rq + sR, aR);
+              store(Rq + sL, aL);
+            }
+          };
+          sums(kRemMass, &w, 1, true);
+          const v4d tE = w * (fe - face.donor(P.eL));
+          sums(kRemE, &tE, 1, false);
+          v4d tU2[DIM];
+          for (int q = 0; q < DIM; ++q) {
+            const v4d du = fu[q] - face.donor(P.u[q]);
+            tU2[q] = w * du * du;
+            const v4d tU = w * du;
+            sums(kRemUx + q, &tU, 1, false);
+          }
+          sums(kRemU2, tU2, DIM, false);
+          const v4d tV = w * (fv - face.donor(P.vL));
+          sums(kRemV, &tV, 1, false);
+        }
+      }
+      for (; i <= ihi; ++i, ++fi, ++cR) {
         const double F = P.Fm[fi];
         if (F == 0) continue;
         const std::int64_t cL = cR - P.sd;
@@ -528,14 +781,14 @@ void IceSolver::advectFluids() {
         if (D == cL ? ownL : ownR) {
           double* R = rem + (D == cL ? rowL + col(i - (d == 0)) : rowR + col(i));
           const double w = lam * std::abs(F);
-          R[kRemMass] -= w;
-          R[kRemE] += w * (f.e - P.eL[D]);
+          R[kRemMass * rs] -= w;
+          R[kRemE * rs] += w * (f.e - P.eL[D]);
           for (int q = 0; q < DIM; ++q) {  // beyond dim the face velocity is the donor's
             const double du = f.u[q] - P.u[q][D];
-            R[kRemU2] += w * du * du;
-            R[kRemUx + q] += w * du;
+            R[kRemU2 * rs] += w * du * du;
+            R[(kRemUx + q) * rs] += w * du;
           }
-          R[kRemV] += w * (f.v - P.vL[D]);
+          R[kRemV * rs] += w * (f.v - P.vL[D]);
         }
       }
     };
@@ -576,7 +829,24 @@ void IceSolver::advectFluids() {
         for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
           for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
             std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-            for (int i = fb.lo[0]; i <= fb.hi[0]; ++i, ++fi, ++cR) {
+            int i = fb.lo[0];
+            if (dim >= 2) {  // four faces at once (applyLanes); along x the inner faces only
+              const int jk = d == 1 ? j : k;
+              const bool ownL = d == 0 || jk > owned_.lo[d], ownR = d == 0 || jk <= owned_.hi[d];
+              const int i1 = d == 0 ? owned_.hi[0] : fb.hi[0];
+              if (d == 0) {  // the first face (a ghost on its low side) alone
+                const double F = Fm[fi];
+                if (F != 0) ma[cR] += (F > 0 ? sc[cR - sd] : sc[cR]) * F;
+                ++i, ++fi, ++cR;
+              }
+              for (; i + 3 <= i1; i += 4, fi += 4, cR += 4) {
+                const lanes::v4d F = lanes::load(Fm + fi);
+                const lanes::v4m nz = F != 0;
+                const lanes::v4d v = lanes::sel(F > 0, lanes::load(sc + cR - sd), lanes::load(sc + cR)) * F;
+                applyLanes(ma, v, nz, cR - sd, cR, d == 0, ownL, ownR);
+              }
+            }
+            for (; i <= fb.hi[0]; ++i, ++fi, ++cR) {
               const double F = Fm[fi];
               if (F == 0) continue;
               const std::int64_t cL = cR - sd;
@@ -607,10 +877,17 @@ void IceSolver::advectFluids() {
       auto row = [&](int d, int j, int k, int ihi) { pass2Row(P[d], d, j, k, owned_.lo[0], ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
         if (s <= owned_.hi[top]) {
-          forSlab(s, [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
-            R[kRemMass] = ms[c];
-            for (int q = 1; q < kRemSums; ++q) R[q] = 0.0;
-          });
+          auto init = [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
+            R[kRemMass * rs] = ms[c];
+            for (int q = 1; q < kRemSums; ++q) R[q * rs] = 0.0;
+          };
+          forSlabLanes(
+              s,
+              [&](std::int64_t c, double* R) {
+                lanes::store(R + kRemMass * rs, lanes::load(ms + c));
+                for (int q = 1; q < kRemSums; ++q) lanes::store(R + q * rs, lanes::splat(0.0));
+              },
+              init);
           if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
           if (dim == 3) {
             for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
@@ -627,14 +904,31 @@ void IceSolver::advectFluids() {
           for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, owned_.hi[0]);
         if (s == owned_.lo[top]) continue;
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
-        forSlab(s - 1, [&](std::int64_t c, const double* R) {
+        auto blend1 = [&](std::int64_t c, const double* R) {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
-          const double b = positivityBlend(R, eL[c] - ec, vL[c]);
+          const double b = positivityBlend(R, rs, eL[c] - ec, vL[c]);
           if (b < 1.0) {
             adv_.blends.push_back({c, b});
             ++positivityBlends_;
           }
-        });
+        };
+        // Four donors at once: blend1 only where one of positivityBlend's tests can lower b (the
+        // same operations; b is 1 exactly where none does). Without a cold energy (ec = 0).
+        auto blend4 = [&](std::int64_t c, const double* R) {
+          using lanes::v4d, lanes::v4m, lanes::load;
+          if (!cold) {
+            auto sum = [&](int q) { return load(R + q * rs); };
+            const v4d mr = sum(kRemMass), A = sum(kRemE), vD = load(vL + c);
+            const v4d C = (1.0 - kMinRemainderShare) * mr * (load(eL + c) - 0.0);
+            const v4d P2 = sum(kRemUx) * sum(kRemUx) + sum(kRemUy) * sum(kRemUy) + sum(kRemUz) * sum(kRemUz);
+            const v4d Cv = (1.0 - kMinRemainderShare) * mr * vD;
+            const v4m lower = ((C > 0) & ((A + 0.5 * sum(kRemU2) - C) * mr + 0.5 * P2 > 0)) | ((C > 0) & (-A > C)) |
+                              ((Cv > 0) & (lanes::abs(sum(kRemV)) > Cv));
+            if (!lanes::any((mr > 0) & lower)) return;
+          }
+          for (int l = 0; l < 4; ++l) blend1(c + l, R + l);
+        };
+        forSlabLanes(s - 1, blend4, blend1);
       }
 
       // At the outgoing faces of the few donors with a blend below 1, the difference between the

@@ -17,6 +17,7 @@
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/fixed_counts.h"
 
 namespace mpmice::ice {
 
@@ -47,6 +48,17 @@ void IceSolver::exchange() {
               m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
+  // The kinetic energy the drag dissipates D [J] and the heat capacity C = sum m cv [J/K] of one
+  // cell after its momentum exchange (T double; D, C start at 0), or of four (T lanes::v4d).
+  auto dragHeat = [&]<class T>(int n, int nd, const T* x, const T* x0, const T* mass, T& D, T& C) {
+    for (int r = 0; r < n; ++r) {
+      for (int d = 0; d < nd; ++d) {
+        const T un = x[d * n + r], uo = x0[d * n + r];
+        D += 0.5 * mass[r] * (uo - un) * (uo + un);
+      }
+      C += mass[r] * ptr[r].cv;
+    }
+  };
   // One cell (stored index c, owned index o). NM, DIM > 0: the number of materials and the mesh's
   // dimension fixed at compile time (the small loops unroll; the same operations in the same
   // order as with the run-time counts, 0).
@@ -66,14 +78,8 @@ void IceSolver::exchange() {
       }
       exchangeCouplings(n, dtV, K_.data(), th, w);
       pointwiseExchange(n, s, w, x, nd);
-      double D = 0, C = 0;  // kinetic energy the drag dissipates [J]; heat capacity m cv [J/K]
-      for (int r = 0; r < n; ++r) {
-        for (int d = 0; d < nd; ++d) {
-          const double un = x[d * n + r], uo = x0[d * n + r];
-          D += 0.5 * mass[r] * (uo - un) * (uo + un);
-        }
-        C += mass[r] * ptr[r].cv;
-      }
+      double D = 0, C = 0;
+      dragHeat(n, nd, x, x0, mass, D, C);
       for (int r = 0; r < n; ++r) {
         const Ptr& Q = ptr[r];
         const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
@@ -101,20 +107,66 @@ void IceSolver::exchange() {
       }
     }
   };
+  // cell() at the four cells c .. c + 3 (the lanes, lanes.h): the same operations in the same
+  // order (the temperature's, (e - e_cold(rho)) / cv, too), branches as selects.
+  auto cellLanes = [&]<int NM, int DIM>(std::int64_t c, std::int64_t o) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::load, lanes::store, lanes::sel, lanes::splat;
+    v4d s[NM], w[NM * NM], x[3 * NM], x0[3 * NM], mass[NM], th[NM];
+    for (int r = 0; r < NM; ++r) {
+      mass[r] = load(ptr[r].m + c);
+      th[r] = load(ptr[r].th + c);
+    }
+    if (anyK_) {
+      for (int r = 0; r < NM; ++r) {
+        s[r] = mass[r];
+        for (int d = 0; d < DIM; ++d) x[d * NM + r] = x0[d * NM + r] = load(ptr[r].uL[d] + c);
+      }
+      exchangeCouplingsLanes<NM>(dtV, K_.data(), th, w);
+      pointwiseExchangeLanes<NM, DIM>(s, w, x);
+      v4d D = splat(0.0), C = splat(0.0);
+      dragHeat(NM, DIM, x, x0, mass, D, C);
+      for (int r = 0; r < NM; ++r) {
+        const Ptr& Q = ptr[r];
+        const v4d de = sel(C > 0, D * ptr[r].cv / C, splat(0.0));
+        for (int d = 0; d < DIM; ++d) {
+          const v4d un = x[d * NM + r], uo = x0[d * NM + r];
+          store(Q.uL[d] + c, un);
+          if (Q.external) store(Q.dMom[d] + o, mass[r] * (un - uo));
+        }
+        store(Q.eL + c, load(Q.eL + c) + de);
+        if (Q.external) store(Q.dE + o, load(Q.dE + o) + mass[r] * de);
+      }
+    }
+    if (anyH_) {
+      for (int r = 0; r < NM; ++r) {
+        const Eos& eos = *st_.mat[r].eos;
+        s[r] = mass[r] * ptr[r].cv;
+        const v4d rho = 1.0 / load(ptr[r].vL + c), e = load(ptr[r].eL + c);
+        const v4d cold = {eos.coldEnergy(rho[0]), eos.coldEnergy(rho[1]), eos.coldEnergy(rho[2]), eos.coldEnergy(rho[3])};
+        x[r] = x0[r] = (e - cold) / eos.cv();  // Eos::temperature
+      }
+      exchangeCouplingsLanes<NM>(dtV, H_.data(), th, w);
+      pointwiseExchangeLanes<NM, 1>(s, w, x);
+      for (int r = 0; r < NM; ++r) {
+        const v4d de = ptr[r].cv * (x[r] - x0[r]);
+        store(ptr[r].eL + c, load(ptr[r].eL + c) + de);
+        if (ptr[r].external) store(ptr[r].dE + o, load(ptr[r].dE + o) + mass[r] * de);
+      }
+    }
+  };
   // The owned cells in forEach's order, by rows (flat indices: o counts the owned cells).
   auto sweep = [&]<int NM, int DIM>() {
     std::int64_t o = 0;
     for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
       for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
         std::int64_t c = sb.index(owned_.lo[0], j, k);
-        for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+        int i = owned_.lo[0];
+        if constexpr (NM > 0 && DIM > 0)
+          for (; i + 3 <= owned_.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
+        for (; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
-  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
-  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
-  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
-  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
-  else sweep.template operator()<0, 0>();
+  withFixedCounts<false>(nm, dim, sweep);
   relaxEmbeddedFluidTemperatures();
 }
 

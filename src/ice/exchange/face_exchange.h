@@ -14,6 +14,7 @@
 
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/state/ice_state.h"
+#include "ice/state/lanes.h"
 
 namespace mpmice::ice {
 
@@ -44,6 +45,16 @@ inline void faceExchangeFixed(int n, double dt, const double* K, const double* t
 inline void faceExchange(int n, double dt, const double* K, const double* theta, const double* v, double* x,
                          int nrhs = 1) {
   faceExchangeFixed<0>(n, dt, K, theta, v, x, nrhs);
+}
+
+/// faceExchangeFixed<N> with one right-hand side at four faces (the lanes).
+template <int N>
+inline void faceExchangeLanes(double dt, const double* K, const lanes::v4d* theta, const lanes::v4d* v,
+                              lanes::v4d* x) {
+  lanes::v4d s[N], w[N * N];
+  for (int r = 0; r < N; ++r) s[r] = theta[r] / v[r];
+  exchangeCouplingsLanes<N>(dt, K, theta, w);
+  pointwiseExchangeLanes<N, 1>(s, w, x);
 }
 
 }  // namespace mpmice::ice

@@ -12,9 +12,25 @@
 /// right-hand sides (velocity components) with one factorisation.
 #include <cstddef>
 
+#include "ice/state/lanes.h"
+
 namespace mpmice::ice {
 
 inline constexpr int kMaxMaterials = 16;
+
+/// b = s x for each of the nrhs right-hand sides (x[c * n + r]), and row k's GTH pivot
+/// s_k + sum_{j > k} w_kj (formed without subtraction); T: double, or lanes::v4d for the lanes.
+template <class T>
+inline void scaledRightHandSides(int n, int nrhs, const T* s, const T* x, T* b) {
+  for (int c = 0; c < nrhs; ++c)
+    for (int r = 0; r < n; ++r) b[c * n + r] = s[r] * x[c * n + r];
+}
+template <class T>
+inline T gthPivot(int n, int k, const T* s, const T* w) {
+  T a = s[k];
+  for (int j = k + 1; j < n; ++j) a += w[k * n + j];
+  return a;
+}
 
 /// The solve with n = N and nrhs = NRHS fixed at compile time where they are positive (the loops
 /// then unroll; the same operations in the same order as with run-time counts).
@@ -24,11 +40,9 @@ inline void pointwiseExchangeFixed(int n, double* s, double* w, double* x, int n
   if constexpr (NRHS > 0) nrhs = NRHS;
   double b[3 * kMaxMaterials];
   double piv[kMaxMaterials];
-  for (int c = 0; c < nrhs; ++c)
-    for (int r = 0; r < n; ++r) b[c * n + r] = s[r] * x[c * n + r];
+  scaledRightHandSides(n, nrhs, s, x, b);
   for (int k = 0; k < n; ++k) {
-    double a = s[k];
-    for (int j = k + 1; j < n; ++j) a += w[k * n + j];
+    const double a = gthPivot(n, k, s, w);
     piv[k] = a;
     if (!(a > 0)) continue;  // absent and decoupled
     const double inv = 1.0 / a;
@@ -77,6 +91,49 @@ inline void exchangeCouplings(int n, double scale, const double* K, const double
   if (n == 2) return exchangeCouplingsFixed<2>(n, scale, K, theta, w);
   if (n == 3) return exchangeCouplingsFixed<3>(n, scale, K, theta, w);
   exchangeCouplingsFixed<0>(n, scale, K, theta, w);
+}
+
+/// pointwiseExchangeFixed<N, NRHS> at four cells or faces (the lanes, lanes.h): the same
+/// operations in the same order, each skipped elimination step (an absent pivot, a zero coupling)
+/// a select of the values it leaves. s, w: scratch (modified); x[c * N + r] in: x^in, out:
+/// exchanged.
+template <int N, int NRHS>
+inline void pointwiseExchangeLanes(lanes::v4d* s, lanes::v4d* w, lanes::v4d* x) {
+  static_assert(N > 0 && N <= kMaxMaterials && NRHS > 0 && NRHS <= 3);
+  using lanes::v4d, lanes::v4m, lanes::sel;
+  v4d b[NRHS * N], piv[N];
+  scaledRightHandSides(N, NRHS, s, x, b);
+  for (int k = 0; k < N; ++k) {
+    const v4d a = gthPivot(N, k, s, w);
+    piv[k] = a;
+    if (k + 1 == N) break;
+    const v4m on = a > 0;
+    const v4d inv = 1.0 / a;
+    for (int i = k + 1; i < N; ++i) {
+      const v4d wik = w[i * N + k];
+      const v4m m = on & (wik != 0);
+      const v4d f = wik * inv;
+      s[i] = sel(m, s[i] + f * s[k], s[i]);
+      for (int j = k + 1; j < N; ++j)
+        if (j != i) w[i * N + j] = sel(m, w[i * N + j] + f * w[k * N + j], w[i * N + j]);
+      for (int c = 0; c < NRHS; ++c) b[c * N + i] = sel(m, b[c * N + i] + f * b[c * N + k], b[c * N + i]);
+    }
+  }
+  for (int k = N - 1; k >= 0; --k) {
+    const v4m on = piv[k] > 0;
+    for (int c = 0; c < NRHS; ++c) {
+      v4d acc = b[c * N + k];
+      for (int j = k + 1; j < N; ++j) acc += w[k * N + j] * x[c * N + j];
+      x[c * N + k] = sel(on, acc / piv[k], x[c * N + k]);
+    }
+  }
+}
+
+/// exchangeCouplingsFixed<N> at four cells or faces: w_rq = scale K_rq theta_r theta_q.
+template <int N>
+inline void exchangeCouplingsLanes(double scale, const double* K, const lanes::v4d* theta, lanes::v4d* w) {
+  for (int r = 0; r < N; ++r)
+    for (int q = 0; q < N; ++q) w[r * N + q] = scale * K[r * N + q] * theta[r] * theta[q];
 }
 
 }  // namespace mpmice::ice

@@ -18,6 +18,7 @@
 #include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/fixed_counts.h"
 #include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
@@ -85,6 +86,13 @@ double riemannVelocityResponse(const CellMixes& x, std::int64_t L, std::int64_t 
   return (x.lowMach ? lowMachScale(x, l, r) : 1.0) / (wL + wR);
 }
 
+// riemannImpedance at four faces (the lanes, lanes.h): the same operations, 0 where it returns 0.
+lanes::v4d riemannImpedanceLanes(lanes::v4d zL, lanes::v4d rhoL, lanes::v4d zR, lanes::v4d rhoR, lanes::v4d du) {
+  const lanes::v4m on = (du < 0) & (zL > 0) & (zR > 0);
+  const lanes::v4d wL = zL - kShockImpedanceSlope * rhoL * du, wR = zR - kShockImpedanceSlope * rhoR * du;
+  return lanes::sel(on, wL * wR / (wL + wR), lanes::splat(0.0));
+}
+
 // The acoustic impedance rho c = 1 / sqrt(v kappa) of material m in stored cell c; 0 where it is
 // absent (theta at most kPresentFraction) or has no finite compressibility (a held trace, kappa 0;
 // a cavitated liquid, kappa inf).
@@ -133,7 +141,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
   const auto n = static_cast<std::size_t>(box.numPts());
   x.rho.resize(n);
   x.z.resize(n);
-  x.p.resize(n);
+  if (x.lowMach) x.p.resize(n);  // the pressures only for lowMachScale's strain
   for (int d = 0; d < dim; ++d) x.u[static_cast<std::size_t>(d)].resize(n);
   const core::Box& sb = st.press.box();
   const int nm = static_cast<int>(st.mat.size());
@@ -168,9 +176,33 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
       if (t > 0) dn += t / m.sv[c], kap += t * m.ka[c];
     }
     x.rho[o] = dn;
-    x.p[o] = st.press.data()[c];
+    if (x.lowMach) x.p[o] = st.press.data()[c];
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
+  };
+  // cell() at the four cells c .. c + 3 (the lanes, lanes.h): the same operations, selects for
+  // its branches.
+  auto cellLanes = [&]<int NM, int DIM>(std::int64_t c, std::size_t o) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::v4m, lanes::load, lanes::sel, lanes::splat;
+    const v4d zero = splat(0.0);
+    v4d mass = zero, mu[DIM], dn = zero, kap = zero;
+    for (int d = 0; d < DIM; ++d) mu[d] = zero;
+    v4m solid = v4m{0, 0, 0, 0};
+    for (int r = 0; r < NM; ++r) {
+      const Ptr& m = ptr[r];
+      const v4d mm = load(m.m + c);
+      mass += mm;
+      if (m.external) solid = solid | (mm > 0);
+      for (int d = 0; d < DIM; ++d) mu[d] += mm * load(m.u[d] + c);
+      const v4d t = load(m.th + c);
+      const v4m on = t > 0;
+      dn = sel(on, dn + t / load(m.sv + c), dn);
+      kap = sel(on, kap + t * load(m.ka + c), kap);
+    }
+    lanes::store(x.rho.data() + o, dn);
+    if (x.lowMach) lanes::store(x.p.data() + o, load(st.press.data() + c));
+    lanes::store(x.z.data() + o, sel((dn > 0) & (kap > 0) & ~solid, lanes::sqrt(dn / kap), zero));
+    for (int d = 0; d < DIM; ++d) lanes::store(xu[d] + o, sel(mass > 0, mu[d] / mass, zero));
   };
   // The cells in forEach's order, by rows (flat indices along each row; o counts the box's cells).
   auto sweep = [&]<int NM, int DIM>() {
@@ -178,16 +210,14 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
     for (int k = box.lo[2]; k <= box.hi[2]; ++k)
       for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
         std::int64_t c = sb.index(box.lo[0], j, k);
-        for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
+        int i = box.lo[0];
+        if constexpr (NM > 0 && DIM > 0)
+          for (; i + 3 <= box.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
+        for (; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
       }
   };
-  if (nm == 2 && dim == 2) sweep.template operator()<2, 2>();
-  else if (nm == 2 && dim == 3) sweep.template operator()<2, 3>();
-  else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
-  else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
-  else sweep.template operator()<0, 0>();
+  withFixedCounts<true>(nm, dim, sweep);
 }
-
 
 void IceSolver::computeFaceVelocities() {
   const int dim = mesh_.dim();
@@ -328,6 +358,46 @@ void IceSolver::computeFaceVelocities() {
         ptr[r].uf[fi] = u;
       }
     };
+    // Four faces of a row at once (the lanes, lanes.h), where the face needs no more than the
+    // fluids' own values: no fluid held by a solid's exchange (exchSolids), no solids' face
+    // transport, no mobilities, no inflow side in d. The same operations in the same order as
+    // face() there; its divisions four at a time.
+    const bool lanesOk = !exchSolids && !mobility && !st_.solidFaces.on && !inLo && !inHi && !mix.lowMach;
+    auto faceLanes = [&]<int NM>(std::int64_t cR, std::int64_t fi, std::int64_t R) __attribute__((always_inline)) {
+      using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+      const std::int64_t cL = cR - sd;
+      const v4d dpdx = (load(p + cR) - load(p + cL)) / dx;
+      v4d x[NM], th[NM], vf[NM];
+      for (int r = 0; r < NM; ++r) {  // faceMaterialValues (faceSpecificVolume)
+        const Ptr& P = ptr[r];
+        th[r] = 0.5 * (load(P.th + cL) + load(P.th + cR));
+        const v4d mL = load(P.m + cL), mR = load(P.m + cR), vL = load(P.sv + cL), vR = load(P.sv + cR);
+        const v4m on = mL + mR > 0;
+        vf[r] = sel(on, mL * vL + mR * vR, 2.0 * vL * vR) / sel(on, mL + mR, vL + vR);
+      }
+      v4d riemann = lanes::splat(0.0);
+      if (riemannOn) {  // dx * riemannVelocityResponse
+        const double *u = mix.u[static_cast<std::size_t>(d)].data(), *z = mix.z.data(), *rho = mix.rho.data();
+        const std::int64_t L = R - sdx;
+        const v4d du = load(u + R) - load(u + L), zL = load(z + L), zR = load(z + R);
+        const v4m on = (du < 0) & (zL > 0) & (zR > 0);
+        const v4d wL = zL - kShockImpedanceSlope * load(rho + L) * du, wR = zR - kShockImpedanceSlope * load(rho + R) * du;
+        riemann = dx * sel(on, 1.0 / (wL + wR), lanes::splat(0.0));
+      }
+      for (int r = 0; r < NM; ++r) {
+        const Ptr& P = ptr[r];
+        const v4d mL = load(P.m + cL), mR = load(P.m + cR), uL = load(P.u + cL), uR = load(P.u + cR);
+        const v4d msum = mL + mR;
+        const v4m on = msum > 0;
+        const v4d t1 = sel(on, mL * uL + mR * uR, 0.5 * (uL + uR)) / sel(on, msum, lanes::splat(1.0));
+        v4d mx = dt * vf[r];  // std::max({dt vf, riemann, held = 0})
+        mx = sel(mx < riemann, riemann, mx);
+        mx = sel(mx < 0.0, lanes::splat(0.0), mx);
+        x[r] = t1 - mx * dpdx + dt * g;
+      }
+      if (exch) faceExchangeLanes<NM>(dt, K_.data(), th, vf, x);
+      for (int r = 0; r < NM; ++r) lanes::store(ptr[r].uf + fi, x[r]);
+    };
     // The faces in forEach's order, by rows (flat indices along each row).
     auto sweep = [&]<int NM>() {
       for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
@@ -335,16 +405,20 @@ void IceSolver::computeFaceVelocities() {
           const int i0 = fb.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k);
           std::int64_t R = riemannOn ? mix.box.index(i0, j, k) : 0, hR = exchSolids ? H.box.index(i0, j, k) : 0;
-          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR)
-            face.template operator()<NM>(i, j, k, cR, fi, R, hR);
+          int i = i0;
+          if constexpr (NM > 0)
+            if (lanesOk)
+              for (; i + 3 <= fb.hi[0]; i += 4, cR += 4, fi += 4, R += 4, hR += 4)
+                faceLanes.template operator()<NM>(cR, fi, R);
+          for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
         }
     };
-    if (nm == 2) sweep.template operator()<2>();
+    if (nm == 1) sweep.template operator()<1>();
+    else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
   }
 }
-
 
 double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du, double scale) {
   if (!(du < 0) || !(zL > 0 && zR > 0)) return 0.0;
@@ -361,12 +435,37 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
   const CellMixes& x = mixes ? *mixes : own;
   const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
   double rate = 0;
+  // The cell's rate at the four cells c .. c + 3 (the lanes, lanes.h: the same operations); the
+  // maximum taken cell by cell in order, as below.
+  auto cellLanes = [&](int i, int j, int k, std::int64_t c) __attribute__((always_inline)) {
+    using lanes::v4d, lanes::load;
+    const double *z = x.z.data(), *rh = x.rho.data();
+    const v4d zC = load(z + c), rC = load(rh + c);
+    v4d s = lanes::splat(0.0);
+    for (int d = 0; d < dim; ++d) {
+      const double* u = x.u[static_cast<std::size_t>(d)].data();
+      const std::int64_t L = c - strides[d], R = c + strides[d];
+      const v4d uC = load(u + c);
+      s += (riemannImpedanceLanes(load(z + L), load(rh + L), zC, rC, uC - load(u + L)) +
+            riemannImpedanceLanes(zC, rC, load(z + R), load(rh + R), load(u + R) - uC)) /
+           mesh.dx(d);
+    }
+    s = lanes::sel(rC > 0, s / rC, lanes::splat(0.0));
+    for (int l = 0; l < 4; ++l)
+      if (s[l] > rate) {
+        rate = s[l];
+        if (cell) *cell = sb.index(i + l, j, k);
+      }
+  };
   // The owned cells in forEach's order, by rows (c: the index in the mixtures' box).
   auto sweep = [&](auto&& f) {
     for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
       for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
         std::int64_t c = x.box.index(owned.lo[0], j, k);
-        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
+        int i = owned.lo[0];
+        if (dim > 0 && !x.lowMach)  // riemann_low_mach: the scalar path (lowMachScale)
+          for (; i + 3 <= owned.hi[0]; i += 4, c += 4) cellLanes(i, j, k, c);
+        for (; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
       }
   };
   sweep([&](int i, int j, int k, std::int64_t c) {
@@ -428,16 +527,44 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
       if (riemann && rL > 0 && rR > 0) pf += riemannDissipation(x, R - strides[d], R, d);
       pface[fi] = pf;
     };
+    // face() at the four faces fi .. fi + 3 without the shock viscosity (the lanes, lanes.h: the
+    // same operations, selects for its branches).
+    auto faceLanes = [&]<int NM>(std::int64_t cR, std::int64_t fi, std::int64_t R) __attribute__((always_inline)) {
+      using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+      const std::int64_t cL = cR - cellStrides[d];
+      v4d rL = lanes::splat(0.0), rR = lanes::splat(0.0);
+      for (int r = 0; r < NM; ++r) {
+        const double* ms = mass[static_cast<std::size_t>(r)];
+        rL += load(ms + cL);
+        rR += load(ms + cR);
+      }
+      const v4d pL = load(press + cL), pR = load(press + cR);
+      const v4m on = rL + rR > 0;
+      v4d pf = sel(on, pL * rR + pR * rL, 0.5 * (pL + pR)) / sel(on, rL + rR, lanes::splat(1.0));
+      if (riemann) {  // riemannDissipation
+        const double *u = x.u[static_cast<std::size_t>(d)].data(), *z = x.z.data(), *rh = x.rho.data();
+        const std::int64_t L = R - strides[d];
+        const v4d du = load(u + R) - load(u + L);
+        const v4d diss = -riemannImpedanceLanes(load(z + L), load(rh + L), load(z + R), load(rh + R), du) * du;
+        pf = sel((rL > 0) & (rR > 0), pf + diss, pf);
+      }
+      lanes::store(pface + fi, pf);
+    };
     // The faces in forEach's order, by rows (flat indices along each row).
     auto sweep = [&]<int NM>() {
       for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
         for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
           const int i0 = fb.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k), R = riemann ? x.box.index(i0, j, k) : 0;
-          for (int i = i0; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
+          int i = i0;
+          if constexpr (NM > 0)
+            if (!q && !x.lowMach)  // riemann_low_mach: the scalar path (lowMachScale)
+              for (; i + 3 <= fb.hi[0]; i += 4, cR += 4, fi += 4, R += 4) faceLanes.template operator()<NM>(cR, fi, R);
+          for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
         }
     };
-    if (nm == 2) sweep.template operator()<2>();
+    if (nm == 1) sweep.template operator()<1>();
+    else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
   }

@@ -4,7 +4,18 @@
 #include <cmath>
 #include <limits>
 
+#include "ice/state/lanes.h"
+
 namespace mpmice::ice {
+
+namespace {
+// Scratch of at least n entries (only the first n are written and read): never shrunk, so the
+// next block's first sweep does not zero it again.
+template <class T>
+void atLeast(std::vector<T>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+}  // namespace
 
 EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
                                          std::vector<bool> fluid, double traceMassFraction)
@@ -99,21 +110,10 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   // state, is held at its carried volume below its own pressure p_own (pHold_), and its floor
   // (below p_own) does not bound the cell's interval.
   const bool traces = traceY_ > 0 && carriedVolume != nullptr && na > 0;
+  // Whether some material of the block is held (pHold_ set for it): the reads of pHold_ below are
+  // made only then (without it every p_own is -inf and no test on it passes).
+  bool hold = false;
   if (traces) {
-    // Indexed by cell - c0_ (the block's cells span c0_ .. c0_ + n - 1).
-    std::int64_t n = 0;
-    c0_ = active_.front();
-    for (const std::int64_t c : active_) c0_ = std::min(c0_, c);
-    for (const std::int64_t c : active_) n = std::max(n, c - c0_ + 1);
-    pHold_.resize(nm);
-    rhoHold_.resize(nm);
-    for (std::size_t r = 0; r < nm; ++r) {
-      if (static_cast<std::int64_t>(pHold_[r].size()) < n) {
-        pHold_[r].resize(static_cast<std::size_t>(n));
-        rhoHold_[r].resize(static_cast<std::size_t>(n));
-      }
-    }
-    all_ = active_;
     // Each active cell's fluid mass, once (the same sum for every material below).
     fluidMass_.resize(na);
     for (std::size_t a = 0; a < na; ++a) {
@@ -123,10 +123,8 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         if (fluid_[s]) mf += rho[s][c];
       fluidMass_[a] = mf;
     }
+    holdCand_.clear();
     for (std::size_t r = 0; r < nm; ++r) {
-      double* ph = pHold_[r].data();
-      double* rh = rhoHold_[r].data();
-      for (const std::int64_t c : active_) ph[c - c0_] = -inf;
       if (!fluid_[r]) continue;
       const double* vc = (*carriedVolume)[r];
       for (std::size_t a = 0; a < na; ++a) {
@@ -139,16 +137,39 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         double po, pf;
         eos_[r]->pressure(1, &rc, &e[r][c], &po);
         eos_[r]->pressureFloor(1, &e[r][c], &pf);
-        if (std::isfinite(po) && po > pf) ph[c - c0_] = po, rh[c - c0_] = rc;  // an admissible carried state
+        if (std::isfinite(po) && po > pf) holdCand_.push_back({r, c, po, rc});  // an admissible carried state
       }
     }
+    hold = !holdCand_.empty();
+  }
+  if (hold) {
+    // Indexed by cell - c0_ (the block's cells span c0_ .. c0_ + n - 1).
+    std::int64_t n = 0;
+    c0_ = active_.front();
+    for (const std::int64_t c : active_) c0_ = std::min(c0_, c);
+    for (const std::int64_t c : active_) n = std::max(n, c - c0_ + 1);
+    pHold_.resize(nm);
+    rhoHold_.resize(nm);
+    for (std::size_t r = 0; r < nm; ++r) {
+      if (static_cast<std::int64_t>(pHold_[r].size()) < n) {
+        pHold_[r].resize(static_cast<std::size_t>(n));
+        rhoHold_[r].resize(static_cast<std::size_t>(n));
+      }
+      double* ph = pHold_[r].data();
+      for (const std::int64_t c : active_) ph[c - c0_] = -inf;
+    }
+    for (const HoldCandidate& h : holdCand_) {
+      pHold_[h.r][static_cast<std::size_t>(h.c - c0_)] = h.p;
+      rhoHold_[h.r][static_cast<std::size_t>(h.c - c0_)] = h.rho;
+    }
+    all_ = active_;
   }
   for (std::size_t r = 0; r < nm; ++r) {
-    ea_.resize(na);
-    pf_.resize(na);
+    atLeast(ea_, na);
+    atLeast(pf_, na);
     for (std::size_t a = 0; a < na; ++a) ea_[a] = e[r][active_[a]];
     eos_[r]->pressureFloor(na, ea_.data(), pf_.data());
-    const double* ph = traces ? pHold_[r].data() : nullptr;
+    const double* ph = hold ? pHold_[r].data() : nullptr;
     for (std::size_t a = 0; a < na; ++a) {
       if (ph && ph[active_[a] - c0_] > -inf) continue;  // a held trace is admissible at every pressure
       if (rho[r][active_[a]] > 0 && !(pf_[a] <= floor_[a])) floor_[a] = pf_[a], floorMat_[a] = static_cast<int>(r);
@@ -168,7 +189,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       double F = floor_[a];
       int cm = -1;
       for (std::size_t r = 0; r < nm; ++r) {
-        const double* ph = traces ? pHold_[r].data() : none;
+        const double* ph = hold ? pHold_[r].data() : none;
         if (!(rho[r][c] > 0) || (ph && ph[c - c0_] > -inf) || !(pCav_[r] > F)) continue;
         F = pCav_[r];
         cm = static_cast<int>(r);
@@ -184,7 +205,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
           continue;
         }
         double rr, dd;
-        const double* ph = traces ? pHold_[r].data() : none;
+        const double* ph = hold ? pHold_[r].data() : none;
         if (ph && F < ph[c - c0_]) rr = rhoHold_[r][static_cast<std::size_t>(c - c0_)];
         else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
         if (!(rr > 0) && pCav_[r] != F) {
@@ -205,7 +226,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         const double free = 1.0 - vOther;
         for (std::size_t r = 0; r < nm; ++r) {
           const double m = rho[r][c];
-          const double* ph = traces ? pHold_[r].data() : none;
+          const double* ph = hold ? pHold_[r].data() : none;
           if (!(m > 0) || pCav_[r] != F || (ph && ph[c - c0_] > -inf)) continue;
           const double share = free * (m / rhoMicro[r][c]) / vCav;  // its volume fraction
           rhoMicro[r][c] = m / share;
@@ -247,27 +268,44 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   // Per active slot the bracket is kept in lo_/hi_ (and the floor in floor_), indexed by slot
   // (compacted along with active_). Every iterate lies strictly inside (lo, hi).
   for (int it = 0; na > 0; ++it) {
-    pa_.resize(na);
-    f_.assign(na, 1.0);
-    df_.assign(na, 0.0);
-    bad_.assign(na, 0);
-    for (std::size_t a = 0; a < na; ++a) pa_[a] = p[active_[a]];
+    atLeast(pa_, na);
+    atLeast(f_, na);
+    atLeast(df_, na);
+    atLeast(bad_, na);
+    for (std::size_t a = 0; a < na; ++a) {
+      pa_[a] = p[active_[a]];
+      f_[a] = 1.0;
+      df_[a] = 0.0;
+      bad_[a] = 0;
+    }
     for (std::size_t r = 0; r < nm; ++r) {
-      ea_.resize(na);
-      ra_.resize(na);
-      da_.resize(na);
+      atLeast(ea_, na);
+      atLeast(ra_, na);
+      atLeast(da_, na);
       const double* er = e[r];
       for (std::size_t a = 0; a < na; ++a) ea_[a] = er[active_[a]];
       eos_[r]->density(na, pa_.data(), ea_.data(), ra_.data(), da_.data());
-      if (traces) {
-        const double* ph = pHold_[r].data();
-        const double* rh = rhoHold_[r].data();
-        for (std::size_t a = 0; a < na; ++a)
-          if (pa_[a] < ph[active_[a] - c0_]) ra_[a] = rh[active_[a] - c0_], da_[a] = 0.0;
-      }
+      const double* ph = hold ? pHold_[r].data() : nullptr;
+      const double* rh = hold ? rhoHold_[r].data() : nullptr;
       const double* rr = rho[r];
       double* rm = rhoMicro[r];
-      for (std::size_t a = 0; a < na; ++a) {
+      std::size_t a = 0;
+      if (!ph)  // four slots at once (the lanes, lanes.h): the loop's operations, selects for its branches
+        for (; a + 4 <= na; a += 4) {
+          using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
+          const std::int64_t* c = active_.data() + a;
+          const v4d m = {rr[c[0]], rr[c[1]], rr[c[2]], rr[c[3]]}, ra = load(ra_.data() + a);
+          for (int l = 0; l < 4; ++l) rm[c[l]] = ra[l];
+          const v4m present = ~(m <= 0), ok = ra > 0;
+          if (lanes::any(present & ~ok))
+            for (int l = 0; l < 4; ++l)
+              if (present[l] && !ok[l]) bad_[a + static_cast<std::size_t>(l)] = 1;
+          const v4d inv = 1.0 / ra, f = load(f_.data() + a), df = load(df_.data() + a);
+          lanes::store(f_.data() + a, sel(present & ok, f - m * inv, f));
+          lanes::store(df_.data() + a, sel(present & ok, df + m * inv * inv * load(da_.data() + a), df));
+        }
+      for (; a < na; ++a) {
+        if (ph && pa_[a] < ph[active_[a] - c0_]) ra_[a] = rh[active_[a] - c0_], da_[a] = 0.0;  // held
         const double m = rr[active_[a]];
         rm[active_[a]] = ra_[a];
         if (m <= 0) continue;
@@ -279,6 +317,15 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         f_[a] -= m * inv;
         df_[a] += m * inv * inv * da_[a];
       }
+    }
+    // The Newton steps pc - f / df, four at a time (read below only where taken).
+    atLeast(next_, na);
+    {
+      std::size_t a = 0;
+      for (; a + 4 <= na; a += 4)
+        lanes::store(next_.data() + a,
+                     lanes::load(pa_.data() + a) - lanes::load(f_.data() + a) / lanes::load(df_.data() + a));
+      for (; a < na; ++a) next_[a] = pa_[a] - f_[a] / df_[a];
     }
     std::size_t keep = 0;
     for (std::size_t a = 0; a < na; ++a) {
@@ -294,7 +341,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         continue;
       }
       if (f < 0) lo = pc; else hi = pc;
-      double next = (!bad_[a] && df_[a] > 0) ? pc - f / df_[a] : std::numeric_limits<double>::quiet_NaN();
+      double next = (!bad_[a] && df_[a] > 0) ? next_[a] : std::numeric_limits<double>::quiet_NaN();  // pc - f / df
       const double F = floor_[a];
       if (!(next > lo && next < hi)) {
         if (std::isfinite(lo) && std::isfinite(hi)) {  // bisect; geometrically across decades above the floor
@@ -338,7 +385,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     floorMat_.resize(na);
     cavFloor_.resize(na);
   }
-  if (traces)
+  if (hold)
     for (const std::int64_t c : all_)
       for (std::size_t r = 0; r < nm; ++r)
         if (p[c] < pHold_[r][static_cast<std::size_t>(c - c0_)]) held_.emplace_back(static_cast<int>(r), c);

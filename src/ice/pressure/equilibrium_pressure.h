@@ -100,11 +100,18 @@ class EquilibriumPressure {
   std::vector<std::int64_t> block_;
   std::vector<std::vector<double>> pHold_, rhoHold_;
   std::vector<std::int64_t> all_;
+  // The block's traces with an admissible carried state: (material, cell, p_own, carried density).
+  struct HoldCandidate {
+    std::size_t r;
+    std::int64_t c;
+    double p, rho;
+  };
+  std::vector<HoldCandidate> holdCand_;
   std::vector<std::pair<int, std::int64_t>> held_, cavitated_;
   std::vector<double> pCav_;  // per material: the cut-off (-inf: none)
   // Scratch over the active cells.
   std::vector<std::int64_t> active_;
-  std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_;
+  std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_, next_;
   std::vector<double> fluidMass_;  // the trace rule: each active cell's fluid mass (per unit volume)
   std::vector<int> floorMat_;
   std::vector<char> bad_, cavFloor_;  // cavFloor_: F is a cavitating liquid's cut-off and f(F) < 0

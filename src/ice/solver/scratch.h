@@ -68,8 +68,9 @@ struct AdvectionScratch {
   /// m (e + |u|^2 / 2), m e; its mass after advection (for fluidMass).
   std::array<std::vector<double>, 3> momentum;
   std::vector<double> energy, eint, mass;
-  /// Per owned cell of two consecutive slabs, kRemSums values: the donor's mass left after its
-  /// outflows and the outflows' sums the positivity blend needs (advection_phase.cpp).
+  /// Over the owned cells of two consecutive slabs, kRemSums arrays one after the other (a row's
+  /// cells consecutive in each, for the lanes): the donor's mass left after its outflows and the
+  /// outflows' sums the positivity blend needs (advection_phase.cpp).
   std::vector<double> remainder;
   std::vector<Blend> blends;  // the blended donors of the fluid being advected
   /// Each donor's face-value blend (1: none), with ghosts, of the fluid being advected; allocated
