@@ -88,7 +88,9 @@ struct HypreStructPcg::Objects {
   /// Writes a matrix (values in hypre's order) into A and assembles it.
   void setMatrix(const double* v) {
     HYPRE_Int e[7] = {0, 1, 2, 3, 4, 5, 6};
-    if (owned.ok()) check(HYPRE_StructMatrixSetBoxValues(A, lower, upper, entries(), e, const_cast<double*>(v)), "StructMatrixSetBoxValues");
+    if (owned.ok())
+      check(HYPRE_StructMatrixSetBoxValues(A, lower, upper, entries(), e, const_cast<double*>(v)),
+            "StructMatrixSetBoxValues");
     check(HYPRE_StructMatrixAssemble(A), "StructMatrixAssemble");
   }
   void destroySolver() {
@@ -205,7 +207,8 @@ LinearResult HypreStructPcg::solve(const FaceStencil& A, const StencilBoundary& 
   }
   auto [its, rel] = H.run(tol, maxIterations);
   if (!fresh && !(std::isfinite(rel) && rel <= tol)) {  // the lagged hierarchy failed: once more, fresh
-    if (A.owned.ok()) check(HYPRE_StructVectorSetBoxValues(H.x, H.lower, H.upper, H.sol.data()), "StructVectorSetBoxValues");
+    if (A.owned.ok())
+      check(HYPRE_StructVectorSetBoxValues(H.x, H.lower, H.upper, H.sol.data()), "StructVectorSetBoxValues");
     check(HYPRE_StructVectorAssemble(H.x), "StructVectorAssemble");
     H.build(comm_.raw(), pre_, H.values.data());
     ++setups_;
