@@ -155,17 +155,7 @@ void IceSolver::exchange() {
     }
   };
   // The owned cells in forEach's order, by rows (flat indices: o counts the owned cells).
-  auto sweep = [&]<int NM, int DIM>() {
-    std::int64_t o = 0;
-    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
-      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
-        std::int64_t c = sb.index(owned_.lo[0], j, k);
-        int i = owned_.lo[0];
-        if constexpr (NM > 0 && DIM > 0)
-          for (; i + 3 <= owned_.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
-        for (; i <= owned_.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
-      }
-  };
+  auto sweep = [&]<int NM, int DIM>() { sweepRowsByLanes<NM, DIM, std::int64_t>(owned_, sb, cellLanes, cell); };
   withFixedCounts<false>(nm, dim, sweep);
   relaxEmbeddedFluidTemperatures();
 }

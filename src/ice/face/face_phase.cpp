@@ -205,17 +205,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
     for (int d = 0; d < DIM; ++d) lanes::store(xu[d] + o, sel(mass > 0, mu[d] / mass, zero));
   };
   // The cells in forEach's order, by rows (flat indices along each row; o counts the box's cells).
-  auto sweep = [&]<int NM, int DIM>() {
-    std::size_t o = 0;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-      for (int j = box.lo[1]; j <= box.hi[1]; ++j) {
-        std::int64_t c = sb.index(box.lo[0], j, k);
-        int i = box.lo[0];
-        if constexpr (NM > 0 && DIM > 0)
-          for (; i + 3 <= box.hi[0]; i += 4, c += 4, o += 4) cellLanes.template operator()<NM, DIM>(c, o);
-        for (; i <= box.hi[0]; ++i, ++c, ++o) cell.template operator()<NM, DIM>(c, o);
-      }
-  };
+  auto sweep = [&]<int NM, int DIM>() { sweepRowsByLanes<NM, DIM, std::size_t>(box, sb, cellLanes, cell); };
   withFixedCounts<true>(nm, dim, sweep);
 }
 
