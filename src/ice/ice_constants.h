@@ -28,6 +28,20 @@ inline constexpr double kShockImpedanceSlope = 1.2;
 /// 4e-4; 0.01 and 0.003 gave the same results on the added-mass, flap and slab tests.
 inline constexpr double kRiemannFullStrain = 0.01;
 
+// ---- time step (explicit pressure)
+/// The largest acoustic Courant number c dt sum_d 1 / dx_d the explicit step takes (its bound
+/// next to time.cfl's convective-acoustic one, IceSolver::stableTimeStep). The explicit step
+/// (face velocities from the cell pressures, the pressure increment from their divergence, the
+/// cell momentum from the faces' mean pressures) is, linearised about a state at rest without the
+/// Riemann terms (the faces of an expansion), unstable above nu = c dt / dx = 1 / sqrt(2) in 1D and
+/// above sum_d nu_d^2 = 1 / 2 in 2D and 3D: the amplification |g| is 1.07 at 0.72, 1.25 at 0.75,
+/// 2.24 at 0.9 (`python3 benchmarks/ice/acoustic_stability.py`). sum_d nu_d <= 0.7 keeps
+/// sum_d nu_d^2 below 1 / 2 in every dimension. Measured (docs/ice.md "The explicit step's
+/// acoustic limit"): water's rarefaction at time.cfl 0.9 grew an odd-even pressure oscillation.
+/// Pinned by IceTimeStep.ExplicitAcousticCourantBoundsASlowFlowAboveCfl07 and
+/// IceShockDefaults.WaterRarefactionAtCflOneStaysMonotone.
+inline constexpr double kMaxAcousticCourant = 0.7;
+
 // ---- regularisation: traces, caps and cut-offs
 /// Volume fraction of each fluid left in the cells a solid object of the scene covers at the
 /// start. No test pins it (only the mpmice integration tests have solid regions, and they

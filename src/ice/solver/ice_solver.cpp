@@ -63,6 +63,9 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   const int dim = mesh_.dim();
   const double V = mesh_.cellVolume();
   double rate = 0;  // max over cells of sum_d (|u_d| + c) / dx_d
+  // Explicit pressure: max over cells of c sum_d 1 / dx_d (kMaxAcousticCourant's bound).
+  double acoustic = 0;
+  std::int64_t acousticCell = -1;
   const int nm = numMaterials();
   const core::Box& sb = st_.press.box();
   std::int64_t rateCell = -1;
@@ -133,6 +136,14 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     double s = 0;
     for (int d = 0; d < nd; ++d)
       s += (semiImplicit_ ? std::max(umax[d], soundFraction_ * cs) : umax[d] + cs) / mesh_.dx(d);
+    if (!semiImplicit_) {
+      double a = 0;
+      for (int d = 0; d < nd; ++d) a += cs / mesh_.dx(d);
+      if (a > acoustic) {
+        acoustic = a;
+        acousticCell = c;
+      }
+    }
     // The shock viscosity is an explicit diffusion with nu = (q1 c + q2 |du|) dx: stable for
     // dt <= dx / (2 (q1 c + q2 |du|)); added to the rate, so the CFL factor covers it as well.
     if (q1_ > 0 || q2_ > 0)
@@ -165,9 +176,21 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   else if (nm == 3 && dim == 2) sweep.template operator()<3, 2>();
   else if (nm == 3 && dim == 3) sweep.template operator()<3, 3>();
   else sweep.template operator()<0, 0>();
-  const double localRate = rate;
+  const double localRate = rate, localAcoustic = acoustic;
   rate = comm_.max(rate);
   double dt = rate > 0 ? cfl_ / rate : dtMax_;
+  // The explicit step's acoustic Courant number (ice_constants.h, kMaxAcousticCourant): the
+  // convective-acoustic bound above keeps it below time.cfl, which may be up to 1; where the flow
+  // is slow against c and time.cfl > kMaxAcousticCourant, this bound sets the step. At time.cfl <=
+  // kMaxAcousticCourant it never does (c sum_d 1 / dx_d <= sum_d (|u_d| + c) / dx_d cell by cell).
+  bool acousticBound = false;
+  if (!semiImplicit_ && cfl_ > kMaxAcousticCourant) {
+    acoustic = comm_.max(acoustic);
+    if (acoustic > 0 && kMaxAcousticCourant / acoustic < dt) {
+      dt = kMaxAcousticCourant / acoustic;
+      acousticBound = true;
+    }
+  }
   // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
   // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
   // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > kPresentFraction).
@@ -228,6 +251,13 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       where->cell = rCell;
       where->riemann = true;
       where->value = rRate;
+    } else if (acousticBound && dt < dtMax_) {
+      static_assert(kMaxAcousticCourant == 0.7, "the message below quotes it");
+      where->limit = "the ICE explicit acoustic bound 0.7 / (c sum_d 1 / dx_d) (time.cfl above 0.7)";
+      where->here = localAcoustic == acoustic;
+      where->cell = acousticCell;
+      where->value = acoustic;
+      where->acoustic = true;
     } else if (rate > 0 && cfl_ / rate < dtMax_) {
       where->limit = semiImplicit_ ? "the ICE CFL bound (convective, sound speed share)"
                                    : "the ICE CFL bound (convective + acoustic)";
@@ -262,6 +292,8 @@ std::string IceSolver::stableTimeStepLimit() const {
   } else {
     if (b.riemann)
       os << ", R = sum_d (Z_lo + Z_hi) / (rho dx_d) = " << b.value << " 1/s; materials:";
+    else if (b.acoustic)
+      os << ", c sum_d 1 / dx_d = " << b.value << " 1/s; materials:";
     else
       os << ", sum_d (|u_d| + c) / dx_d = " << b.value << " 1/s; materials:";
     const double V = mesh_.cellVolume();

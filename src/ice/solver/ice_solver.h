@@ -174,6 +174,7 @@ class IceSolver {
     std::int64_t cell = -1;
     int material = -1;
     bool riemann = false;  // the value is the Riemann dissipation rate (riemannDissipationRate)
+    bool acoustic = false;  // the value is the explicit acoustic rate c sum_d 1 / dx_d
     double value = 0;
   };
   double stableTimeStep(StepBound* where) const;

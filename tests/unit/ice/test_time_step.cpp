@@ -164,3 +164,36 @@ TEST(IceTimeStep, SemiImplicitSoundFractionSetsTheStepOfASlowFlow) {
   b.computeEquilibriumPressure();
   EXPECT_EQ(a.stableTimeStep(), b.stableTimeStep());
 }
+
+// The explicit step's acoustic bound (ice_constants.h, kMaxAcousticCourant = 0.7): gas at rest
+// in a 2D box at time.cfl 1 takes dt = 0.7 / (c sum_d 1 / dx_d), and the limit names it; at
+// time.cfl 0.6 the convective-acoustic bound 0.6 / sum_d ((|u_d| + c) / dx_d) sets it as before;
+// the semi-implicit pressure (its acoustic part implicit) ignores it.
+TEST(IceTimeStep, ExplicitAcousticCourantBoundsASlowFlowAboveCfl07) {
+  core::Scene s = checkerboardBox(0.0);
+  s.time.cfl = 1.0;
+  ice::IceSolver one(s, test::comm());
+  setCheckerboard(one, 0.0);
+  const auto& m = one.state().mat[0];
+  const double c = std::sqrt(m.spvol(3, 3, 0) / m.kappa(3, 3, 0)), rate = 2 * c / 0.1;  // dx = dy = 0.1
+  EXPECT_NEAR(one.stableTimeStep(), ice::kMaxAcousticCourant / rate, 1e-12 / rate);
+  EXPECT_NE(one.stableTimeStepLimit().find("the ICE explicit acoustic bound"), std::string::npos)
+      << one.stableTimeStepLimit();
+  core::Scene low = s;
+  low.time.cfl = 0.6;
+  ice::IceSolver six(low, test::comm());
+  setCheckerboard(six, 0.0);
+  EXPECT_NEAR(six.stableTimeStep(), 0.6 / rate, 1e-12 / rate);
+  EXPECT_NE(six.stableTimeStepLimit().find("convective + acoustic"), std::string::npos) << six.stableTimeStepLimit();
+  // A fast flow (|u| = c along x) at time.cfl 1: (|u| + c) / dx + c / dy = 3 c / dx is above
+  // rate / 0.7, so the convective-acoustic bound still sets the step.
+  ice::IceSolver fast(s, test::comm());
+  core::forEach(fast.ownedBox(), [&](int i, int j, int k) { fast.state().mat[0].vel(i, j, k, 0) = c; });
+  fast.computeEquilibriumPressure();
+  EXPECT_NEAR(fast.stableTimeStep(), 1.0 / (3 * c / 0.1), 1e-12 / rate);
+  core::Scene semi = s;
+  semi.ice.pressure_solver = "semi_implicit";
+  ice::IceSolver si(semi, test::comm());
+  si.computeEquilibriumPressure();
+  EXPECT_NEAR(si.stableTimeStep(), 1.0 / (2 * 0.1 * c / 0.1), 1e-12 / rate);  // its speed floor 0.1 c
+}

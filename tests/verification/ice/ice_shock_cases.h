@@ -40,8 +40,19 @@ inline ShockCase waterAirRealDensity() {
   return {"water_air", {1000, 0, 1e9}, {1.2, 0, 1e5}, {4.4, 6e8}, {1.4, 0}, 0.7, 2.4e-4, true};
 }
 
+/// Water (the stiffened gas above) at 1e9 Pa against water at 1e5 Pa, both at 1000 kg/m^3: one
+/// material, a strong rarefaction at a Mach number of ~0.2 (the explicit step's acoustic limit,
+/// kMaxAcousticCourant, binds there above time.cfl 0.7) and a shock.
+inline ShockCase waterRarefaction() {
+  return {"water_rarefaction", {1000, 0, 1e9}, {1000, 0, 1e5}, {4.4, 6e8}, {4.4, 6e8}, 0.5, 1e-4};
+}
+
 inline core::Scene shockCaseScene(const ShockCase& c, int n, const TubeOptions& o) {
-  if (!c.twoMaterials) return shockTube(n, c.L, c.R, c.x0, c.t, o);
+  if (!c.twoMaterials) {
+    core::Scene s = shockTube(n, c.L, c.R, c.x0, c.t, o, c.gl.gamma);
+    if (c.gl.pinf > 0) s.materials = {stiffenedGas("gas", c.gl.gamma, c.gl.pinf)};  // one law on both sides
+    return s;
+  }
   core::Scene s;
   s.name = c.name;
   s.mesh = core::Mesh(1, {0, 0, 0}, {1.0 / n, 1, 1}, {n, 1, 1});
