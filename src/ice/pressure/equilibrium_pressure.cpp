@@ -60,13 +60,16 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     iters[c] = iterations;
   };
   // An absent material's density at the cell's pressure p (its state if it arrives). Where its law
-  // gives none with a finite positive density there (an ideal gas at p = 0, a cavitated liquid's
-  // cut-off), it keeps the density it carries (1 otherwise): its specific volume stays finite.
+  // gives none with a finite positive density there (an ideal gas at p <= 0, as in water under
+  // tension, a cavitated liquid's cut-off), it keeps the density it carries (1 otherwise): its
+  // specific volume stays finite and positive. (An ideal gas's rho = p / ((gamma - 1) e) at p < 0
+  // was taken as it came: a helium trace advected into such a water cell in a 2D blast kept the
+  // negative specific volume as its Lagrangian value and stopped the run.)
   auto absentDensity = [&](std::size_t r, std::int64_t c, double pc) {
     const double vc = carriedVolume ? (*carriedVolume)[r][c] : 0.0;  // read before rhoMicro (aliased)
     double rr, dd;
     eos_[r]->density(1, &pc, &e[r][c], &rr, &dd);
-    if (rr == 0.0 || !std::isfinite(rr)) rr = vc > 0 && std::isfinite(vc) ? 1.0 / vc : 1.0;
+    if (!(rr > 0.0) || !std::isfinite(rr)) rr = vc > 0 && std::isfinite(vc) ? 1.0 / vc : 1.0;
     rhoMicro[r][c] = rr;
   };
   if (nm == 1) {  // one material fills the cell: theta = 1, p from the EOS directly
@@ -295,8 +298,9 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
           using lanes::v4d, lanes::v4m, lanes::load, lanes::sel;
           const std::int64_t* c = active_.data() + a;
           const v4d m = {rr[c[0]], rr[c[1]], rr[c[2]], rr[c[3]]}, ra = load(ra_.data() + a);
-          for (int l = 0; l < 4; ++l) rm[c[l]] = ra[l];
           const v4m present = ~(m <= 0), ok = ra > 0;
+          for (int l = 0; l < 4; ++l)
+            if (present[l] || ok[l]) rm[c[l]] = ra[l];  // an absent one keeps a positive density (absentDensity)
           if (lanes::any(present & ~ok))
             for (int l = 0; l < 4; ++l)
               if (present[l] && !ok[l]) bad_[a + static_cast<std::size_t>(l)] = 1;
@@ -307,7 +311,9 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       for (; a < na; ++a) {
         if (ph && pa_[a] < ph[active_[a] - c0_]) ra_[a] = rh[active_[a] - c0_], da_[a] = 0.0;  // held
         const double m = rr[active_[a]];
-        rm[active_[a]] = ra_[a];
+        // An absent material where its law gives no positive density at this iterate (an ideal gas
+        // at p < 0, water under tension around it) keeps the one it has (absentDensity's).
+        if (m > 0 || ra_[a] > 0) rm[active_[a]] = ra_[a];
         if (m <= 0) continue;
         if (!(ra_[a] > 0)) {
           bad_[a] = 1;
