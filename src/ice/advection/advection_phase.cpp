@@ -152,28 +152,35 @@ struct FaceValueLanes {
 // v <= 0, Gamma <= 0, e_c - pi v_c <= 0, non-finite): faces touching that cell are not bounded.
 void isentropeFits(const Eos& eos, std::size_t n, const double* v, const double* e, AdvectionScratch& s,
                    std::vector<double>& gam, std::vector<double>& pi) {
-  s.eosRho.resize(n);
-  s.eosE.resize(n);
-  s.eosP1.resize(n);
-  s.eosP2.resize(n);
   gam.resize(n);
   pi.resize(n);
-  for (std::size_t c = 0; c < n; ++c) {
-    s.eosRho[c] = v[c] > 0 ? 1.0 / v[c] : 1.0;
-    s.eosE[c] = e[c];
-  }
-  eos.pressure(n, s.eosRho.data(), s.eosE.data(), s.eosP1.data());
-  for (std::size_t c = 0; c < n; ++c) s.eosE[c] = 2.0 * e[c];
-  eos.pressure(n, s.eosRho.data(), s.eosE.data(), s.eosP2.data());
+  // The batch EOS arguments a chunk of cells at a time (each cell's fit is its own: the same
+  // values as over the whole box, without four more arrays of the box).
+  const std::size_t chunk = AdvectionScratch::kEosChunk;
+  s.eosRho.resize(chunk);
+  s.eosE.resize(chunk);
+  s.eosP1.resize(chunk);
+  s.eosP2.resize(chunk);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t c = 0; c < n; ++c) {
-    const double p1 = s.eosP1[c], dp = s.eosP2[c] - p1;  // dp = Gamma e / v
-    const double g = e[c] > 0 && v[c] > 0 ? dp * v[c] / e[c] : nan;
-    const double P = dp - p1;
-    const double w = P / (g + 1.0);
-    const bool ok = g > 0 && std::isfinite(g) && std::isfinite(w) && e[c] - w * v[c] > 0;
-    gam[c] = ok ? g : nan;
-    pi[c] = ok ? w : 0.0;
+  for (std::size_t c0 = 0; c0 < n; c0 += chunk) {
+    const std::size_t m = std::min(chunk, n - c0);
+    const double *vc = v + c0, *ec = e + c0;
+    for (std::size_t c = 0; c < m; ++c) {
+      s.eosRho[c] = vc[c] > 0 ? 1.0 / vc[c] : 1.0;
+      s.eosE[c] = ec[c];
+    }
+    eos.pressure(m, s.eosRho.data(), s.eosE.data(), s.eosP1.data());
+    for (std::size_t c = 0; c < m; ++c) s.eosE[c] = 2.0 * ec[c];
+    eos.pressure(m, s.eosRho.data(), s.eosE.data(), s.eosP2.data());
+    for (std::size_t c = 0; c < m; ++c) {
+      const double p1 = s.eosP1[c], dp = s.eosP2[c] - p1;  // dp = Gamma e / v
+      const double g = ec[c] > 0 && vc[c] > 0 ? dp * vc[c] / ec[c] : nan;
+      const double P = dp - p1;
+      const double w = P / (g + 1.0);
+      const bool ok = g > 0 && std::isfinite(g) && std::isfinite(w) && ec[c] - w * vc[c] > 0;
+      gam[c0 + c] = ok ? g : nan;
+      pi[c0 + c] = ok ? w : 0.0;
+    }
   }
 }
 
@@ -223,7 +230,6 @@ void IceSolver::advectFluids() {
     for (int d = 0; d < dim; ++d) adv_.momentum[static_cast<std::size_t>(d)].resize(npts);
     adv_.energy.resize(npts);
     adv_.eint.resize(npts);
-    adv_.mass.resize(npts);
   }
 
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
@@ -819,8 +825,10 @@ void IceSolver::advectFluids() {
       const MaterialState& m = st_.mat[r];
       if (m.external) continue;
       outflowScale(r);
-      std::copy(m.mass.data(), m.mass.data() + npts, adv_.mass.begin());
-      double* ma = adv_.mass.data();
+      // Its mass after advection in the conserved internal energy's array (free until the fluids'
+      // passes below fill it).
+      std::copy(m.mass.data(), m.mass.data() + npts, adv_.eint.begin());
+      double* ma = adv_.eint.data();
       const double* sc = outScale.data();
       for (int d = 0; d < dim; ++d) {
         const core::Box fb = owned_.faces(d);

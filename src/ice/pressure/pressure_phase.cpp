@@ -44,17 +44,6 @@ void IceSolver::computeEquilibriumPressure() {
   if (const double Y = equil_->traceMassFraction(); Y > 0 && nm > 1) {
     std::vector<std::int64_t> tc;
     std::vector<double> te, tf;
-    // Each owned cell's fluid mass, once (the same sum for every fluid below; the loop changes
-    // energies only).
-    std::vector<double>& fluidMass = eqFluidMass_;
-    fluidMass.resize(ownedCells_.size());
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
-      double mf = 0;
-      for (const MaterialState& s : st_.mat)
-        if (!s.external) mf += s.mass.data()[c];
-      fluidMass[a] = mf;
-    }
     for (MaterialState& m : st_.mat) {
       if (m.external) continue;
       tc.clear();
@@ -63,7 +52,10 @@ void IceSolver::computeEquilibriumPressure() {
         const std::int64_t c = ownedCells_[a];
         const double mr = m.mass.data()[c];
         if (!(mr > 0)) continue;
-        const double mf = fluidMass[a];
+        // The cell's fluid mass (summed where it is read: the loop changes energies only).
+        double mf = 0;
+        for (const MaterialState& s : st_.mat)
+          if (!s.external) mf += s.mass.data()[c];
         if (mr < Y * mf) tc.push_back(c), te.push_back(m.eint.data()[c]);
       }
       tf.resize(tc.size());
@@ -170,33 +162,39 @@ void IceSolver::reportEquilibriumFailures(const std::vector<EquilibriumFailure>&
 void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>>& held,
                                   const std::vector<std::pair<int, std::int64_t>>& cavitated) {
   const int nm = numMaterials();
-  // Scratch kept from step to step (each entry is written before it is read).
+  // Scratch kept from step to step (each entry is written before it is read): the sound speed's
+  // batch a chunk of owned cells at a time (each cell's values are its own).
   std::vector<double>& ra = eqRho_;
   std::vector<double>& ea = eqE_;
   std::vector<double>& c2 = eqC2_;
+  const std::size_t chunk = kEquilibriumChunk, n = ownedCells_.size();
+  ra.resize(chunk);
+  ea.resize(chunk);
+  c2.resize(chunk);
   for (MaterialState& m : st_.mat) {
     double* th = m.theta.data();
     double* sv = m.spvol.data();
     double* ka = m.kappa.data();
     const double* en = m.eint.data();
-    ra.resize(ownedCells_.size());
-    ea.resize(ownedCells_.size());
-    c2.resize(ownedCells_.size());
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      ra[a] = sv[ownedCells_[a]];
-      ea[a] = en[ownedCells_[a]];
-    }
-    m.eos->soundSpeed2(ra.size(), ra.data(), ea.data(), c2.data());
     const double* ms = m.mass.data();
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
-      const double rm = ra[a];
-      th[c] = nm == 1 ? 1.0 : th[c] / rm;
-      sv[c] = 1.0 / rm;
-      ka[c] = 1.0 / (rm * c2[a]);
-      // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
-      // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
-      if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
+    for (std::size_t a0 = 0; a0 < n; a0 += chunk) {
+      const std::size_t nc = std::min(chunk, n - a0);
+      const std::int64_t* cells = ownedCells_.data() + a0;
+      for (std::size_t a = 0; a < nc; ++a) {
+        ra[a] = sv[cells[a]];
+        ea[a] = en[cells[a]];
+      }
+      m.eos->soundSpeed2(nc, ra.data(), ea.data(), c2.data());
+      for (std::size_t a = 0; a < nc; ++a) {
+        const std::int64_t c = cells[a];
+        const double rm = ra[a];
+        th[c] = nm == 1 ? 1.0 : th[c] / rm;
+        sv[c] = 1.0 / rm;
+        ka[c] = 1.0 / (rm * c2[a]);
+        // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
+        // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
+        if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
+      }
     }
   }
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no

@@ -248,9 +248,10 @@ class IceSolver {
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
   SemiImplicitScratch semi_;
   HeldShares held_;
-  // The equilibrium phase's scratch over the owned cells (kept from step to step: no allocation
-  // and zero fill per step): the fluid mass of the trace fix, the EOS batches of finishEquilibrium.
-  std::vector<double> eqFluidMass_, eqRho_, eqE_, eqC2_;
+  // The equilibrium phase's scratch (kept from step to step: no allocation per step): the EOS
+  // batches of finishEquilibrium, kEquilibriumChunk owned cells at a time.
+  static constexpr std::size_t kEquilibriumChunk = 512;
+  std::vector<double> eqRho_, eqE_, eqC2_;
   AdvectionScratch adv_;
   // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
   // velocities and the face pressure of a step (none of the phases between them changes mass,
