@@ -358,7 +358,6 @@ void forCheckpointFields(State& st, F&& f) {
   for (auto& m : st.mat)
     for (auto* x : {&m.mass, &m.vel, &m.eint, &m.spvol, &m.theta, &m.kappa}) f(*x);
   f(st.press);
-  f(st.pressEq);
 }
 }  // namespace
 

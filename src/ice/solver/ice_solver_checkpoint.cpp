@@ -40,10 +40,8 @@ void forEveryField(State& st, F&& f) {
     f(cat(p, "dEnergy"), x.dEnergy);
   }
   f("press", st.press);
-  f("pressEq", st.pressEq);
   f("dp", st.dp);
   f("iters", st.iters);
-  f("divU", st.divU);
   for (int d = 0; d < 3; ++d) f(cat("volFlux", std::to_string(d)), st.volFlux[d]);
   for (int d = 0; d < 3; ++d) f(cat("pressFace", std::to_string(d)), st.pressFace[d]);
 }

@@ -95,7 +95,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       badInput(scene.materials[r].cavitation.where,
                "materials." + st_.mat[r].name + ".cavitation: not available with ice.pressure_solver: semi_implicit "
                "(a cavitated cell's infinite compressibility is not in its linear system); use explicit");
-  st_.allocate(owned_, stored, dim);
+  st_.allocate(owned_, stored, dim, semiImplicit_);
   std::vector<bool> fluid;
   for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);
   equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations, fluid,

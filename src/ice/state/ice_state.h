@@ -68,17 +68,18 @@ struct SolidFaces {
 
 struct IceState {
   std::vector<MaterialState> mat;
-  core::Field press;      // cell pressure (after the increment)
-  core::Field pressEq;    // equilibrium pressure of this step
-  core::Field dp;         // pressure increment
+  /// Cell pressure: the equilibrium pressure of the step from the equilibrium phase to the pressure
+  /// increment, which adds to it (the equilibrium pressure is not kept apart).
+  core::Field press;
+  core::Field dp;         // pressure increment: the semi-implicit solve's unknown (empty with the explicit pressure)
   core::Field iters;      // equilibrium iterations per cell (diagnostic)
-  core::Field divU;       // div(sum_r theta_r u_f,r) per cell
   std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded; empty beyond dim)
   std::array<core::Field, 3> pressFace;  // empty beyond dim
   SolidFaces solidFaces;
 
-  /// Allocates every field over `stored` (cells) and the faces of `owned`.
-  void allocate(const core::Box& owned, const core::Box& stored, int dim);
+  /// Allocates every field over `stored` (cells) and the faces of `owned`; dp only with the
+  /// semi-implicit pressure.
+  void allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit);
 };
 
 }  // namespace mpmice::ice
