@@ -13,13 +13,13 @@
 
 namespace mpmice::ice {
 
-void IceSolver::initialize(const core::Scene& scene) {
+void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   mixesValid_ = false;
   const int dim = mesh_.dim();
   owned_ = decomp_.cellBox(comm_.rank());
   const core::Box stored = decomp_.storedBox(comm_.rank(), core::Centering::Cell, kGhost);
   ghosts_ = std::make_unique<core::GhostExchange>(decomp_, comm_, core::Centering::Cell, kGhost);
-  initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
+  if (coupledStart) initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
 
   // ---- options
   const core::IceOptions& o = scene.ice;
@@ -158,7 +158,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       m.theta(i, j, k) = frac;
     }
     st_.press(i, j, k) = reg ? *reg->pressure : plan.fluid.empty() ? kReferencePressure : *plan.fluid.front()->pressure;
-    initialPressure_(i, j, k) = st_.press(i, j, k);
+    if (coupledStart) initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 
   // ---- boundaries
