@@ -219,24 +219,35 @@ void IceSolver::advectFluids() {
   const double dt = dt_;
   const core::Box& sb = st_.press.box();
   const std::size_t npts = static_cast<std::size_t>(sb.numPts());
+  // The fluids in order, their face fields: the first two fluids' mass fluxes are the state's face
+  // volume fluxes and face pressures (lent below), the others' their own.
+  std::vector<int> fluids;
+  for (int r = 0; r < nm; ++r)
+    if (!st_.mat[r].external) fluids.push_back(r);
   if (adv_.mat.size() != static_cast<std::size_t>(nm)) {
     adv_.mat.assign(static_cast<std::size_t>(nm), {});
-    for (int r = 0; r < nm; ++r) {
-      if (st_.mat[r].external) continue;
+    for (std::size_t q = 2; q < fluids.size(); ++q)
       for (int d = 0; d < dim; ++d)
-        adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
-    }
+        adv_.mat[static_cast<std::size_t>(fluids[q])].massFlux[d] =
+            core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
   }
   // One set of whole-box arrays serves the cell mixtures (computeCellMixes: the stable step to the
   // face pressure) and the advection's conserved amounts and fluid mass: the mixtures are invalid
   // from here to the next step's stable step, and the advection writes its arrays before it reads
-  // them. They are lent here and handed back at the end, storage and all (no allocation per step).
+  // them. Likewise the face volume fluxes and face pressures (the pressure increment and the face
+  // pressure to the Lagrangian phase; computed again before the next step reads them) hold the
+  // first two fluids' mass fluxes. They are lent here and handed back at the end, storage and all
+  // (no allocation per step).
   auto lend = [&] {
     std::swap(adv_.energy, mixes_.rho);
     std::swap(adv_.eint, mixes_.z);
     std::swap(adv_.fluidMass, mixes_.p);
     for (std::size_t d = 0; d < 3; ++d) std::swap(adv_.momentum[d], mixes_.u[d]);
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (!fluids.empty()) std::swap(adv_.mat[static_cast<std::size_t>(fluids[0])].massFlux[d], st_.volFlux[d]);
+      if (fluids.size() > 1) std::swap(adv_.mat[static_cast<std::size_t>(fluids[1])].massFlux[d], st_.pressFace[d]);
+    }
   };
   lend();
   struct HandBack {
@@ -258,9 +269,7 @@ void IceSolver::advectFluids() {
   // With one fluid advected here the negligible-trace cut-off of the conversion (below) compares
   // its mass after advection with itself: never below kNegligibleMassFraction of it, no fluid
   // mass to sum.
-  int fluids = 0;
-  for (const MaterialState& m : st_.mat) fluids += m.external ? 0 : 1;
-  const bool oneFluid = fluids == 1;
+  const bool oneFluid = fluids.size() == 1;
 
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   // The conserved amounts of the owned cells of the fluid being advected (advected::k* order): the

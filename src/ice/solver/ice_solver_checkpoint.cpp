@@ -1,5 +1,5 @@
-// IceSolver's restart state: every stored field (ghosts included, so the next step reads exactly
-// what it would have read), the clock and the counters. What the scene gives again (the EOS, the
+// IceSolver's restart state: every stored field a step reads before it writes it (ghosts
+// included, so the next step reads exactly what it would have read), the clock and the counters. What the scene gives again (the EOS, the
 // boundary conditions, the sources, the exchange coefficients, the initial pressure) the solver a
 // restart builds recomputes as the original run did; scratch is rewritten before it is read.
 #include <algorithm>
@@ -42,8 +42,8 @@ void forEveryField(State& st, F&& f) {
   f("press", st.press);
   f("dp", st.dp);
   f("iters", st.iters);
-  for (int d = 0; d < 3; ++d) f(cat("volFlux", std::to_string(d)), st.volFlux[d]);
-  for (int d = 0; d < 3; ++d) f(cat("pressFace", std::to_string(d)), st.pressFace[d]);
+  // Not the face volume fluxes and face pressures: a step computes them before it reads them (and
+  // the advection's mass fluxes have their storage at the end of a step).
 }
 
 std::size_t sizeOf(const core::Field& f) { return static_cast<std::size_t>(f.npts() * f.ncomp()); }

@@ -73,8 +73,11 @@ struct IceState {
   core::Field press;
   core::Field dp;         // pressure increment: the semi-implicit solve's unknown (empty with the explicit pressure)
   core::Field iters;      // equilibrium iterations per cell (diagnostic)
-  std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded; empty beyond dim)
-  std::array<core::Field, 3> pressFace;  // empty beyond dim
+  /// Per face (empty beyond dim): sum_r theta_r,f u_f,r (theta upwinded) and the face pressure,
+  /// from the pressure increment and the face pressure to the Lagrangian phase; the advection
+  /// keeps the first two fluids' mass fluxes in them (advectFluids), so after a step they hold those.
+  std::array<core::Field, 3> volFlux;
+  std::array<core::Field, 3> pressFace;
   SolidFaces solidFaces;
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`; dp only with the
