@@ -83,7 +83,10 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     checkHealth(solver);  // collective: every rank stops on a non-physical state
     double maxIt = 0;
     const auto& it = solver.state().iters;
-    core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });
+    const core::Box& sb = solver.state().press.box();
+    core::forEach(solver.ownedBox(), [&](int i, int j, int k) {
+      maxIt = std::max(maxIt, double(it[static_cast<std::size_t>(sb.index(i, j, k))]));
+    });
     core::Progress::Extras extras{{"p_iters", comm.max(maxIt)}};
     if (solver.semiImplicit()) extras.emplace_back("lin_iters", double(solver.linearIterations()));
     progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), extras);

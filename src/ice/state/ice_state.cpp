@@ -28,7 +28,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
   }
   press = cell("pressure", 1);
   dp = semiImplicit ? cell("pressure_increment", 1) : Field();
-  iters = cell("pressure_iterations", 1);
+  iters.assign(static_cast<std::size_t>(stored.numPts()), 0);
   for (int d = 0; d < dim; ++d) {
     pressFace[d] = Field("face_pressure", Centering::Cell, owned.faces(d), 1, 0);
     volFlux[d] = Field("face_volume_flux", Centering::Cell, owned.faces(d), 1, 0);

@@ -72,7 +72,9 @@ struct IceState {
   /// increment, which adds to it (the equilibrium pressure is not kept apart).
   core::Field press;
   core::Field dp;         // pressure increment: the semi-implicit solve's unknown (empty with the explicit pressure)
-  core::Field iters;      // equilibrium iterations per cell (diagnostic)
+  /// Equilibrium iterations per stored cell (a diagnostic; the cell fields' indexing, press.box()),
+  /// a count: 4 bytes, not a double.
+  std::vector<int> iters;
   /// Per face (empty beyond dim): sum_r theta_r,f u_f,r (theta upwinded) and the face pressure,
   /// from the pressure increment and the face pressure to the Lagrangian phase; the advection
   /// keeps the first two fluids' mass fluxes in them (advectFluids), so after a step they hold those.
