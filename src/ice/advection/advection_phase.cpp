@@ -152,28 +152,35 @@ struct FaceValueLanes {
 // v <= 0, Gamma <= 0, e_c - pi v_c <= 0, non-finite): faces touching that cell are not bounded.
 void isentropeFits(const Eos& eos, std::size_t n, const double* v, const double* e, AdvectionScratch& s,
                    std::vector<double>& gam, std::vector<double>& pi) {
-  s.eosRho.resize(n);
-  s.eosE.resize(n);
-  s.eosP1.resize(n);
-  s.eosP2.resize(n);
   gam.resize(n);
   pi.resize(n);
-  for (std::size_t c = 0; c < n; ++c) {
-    s.eosRho[c] = v[c] > 0 ? 1.0 / v[c] : 1.0;
-    s.eosE[c] = e[c];
-  }
-  eos.pressure(n, s.eosRho.data(), s.eosE.data(), s.eosP1.data());
-  for (std::size_t c = 0; c < n; ++c) s.eosE[c] = 2.0 * e[c];
-  eos.pressure(n, s.eosRho.data(), s.eosE.data(), s.eosP2.data());
+  // The batch EOS arguments a chunk of cells at a time (each cell's fit is its own: the same
+  // values as over the whole box, without four more arrays of the box).
+  const std::size_t chunk = AdvectionScratch::kEosChunk;
+  s.eosRho.resize(chunk);
+  s.eosE.resize(chunk);
+  s.eosP1.resize(chunk);
+  s.eosP2.resize(chunk);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t c = 0; c < n; ++c) {
-    const double p1 = s.eosP1[c], dp = s.eosP2[c] - p1;  // dp = Gamma e / v
-    const double g = e[c] > 0 && v[c] > 0 ? dp * v[c] / e[c] : nan;
-    const double P = dp - p1;
-    const double w = P / (g + 1.0);
-    const bool ok = g > 0 && std::isfinite(g) && std::isfinite(w) && e[c] - w * v[c] > 0;
-    gam[c] = ok ? g : nan;
-    pi[c] = ok ? w : 0.0;
+  for (std::size_t c0 = 0; c0 < n; c0 += chunk) {
+    const std::size_t m = std::min(chunk, n - c0);
+    const double *vc = v + c0, *ec = e + c0;
+    for (std::size_t c = 0; c < m; ++c) {
+      s.eosRho[c] = vc[c] > 0 ? 1.0 / vc[c] : 1.0;
+      s.eosE[c] = ec[c];
+    }
+    eos.pressure(m, s.eosRho.data(), s.eosE.data(), s.eosP1.data());
+    for (std::size_t c = 0; c < m; ++c) s.eosE[c] = 2.0 * ec[c];
+    eos.pressure(m, s.eosRho.data(), s.eosE.data(), s.eosP2.data());
+    for (std::size_t c = 0; c < m; ++c) {
+      const double p1 = s.eosP1[c], dp = s.eosP2[c] - p1;  // dp = Gamma e / v
+      const double g = ec[c] > 0 && vc[c] > 0 ? dp * vc[c] / ec[c] : nan;
+      const double P = dp - p1;
+      const double w = P / (g + 1.0);
+      const bool ok = g > 0 && std::isfinite(g) && std::isfinite(w) && ec[c] - w * vc[c] > 0;
+      gam[c0 + c] = ok ? g : nan;
+      pi[c0 + c] = ok ? w : 0.0;
+    }
   }
 }
 
@@ -212,19 +219,57 @@ void IceSolver::advectFluids() {
   const double dt = dt_;
   const core::Box& sb = st_.press.box();
   const std::size_t npts = static_cast<std::size_t>(sb.numPts());
+  // The fluids in order, their face fields: the first two fluids' mass fluxes are the state's face
+  // volume fluxes and face pressures (lent below), the others' their own.
+  std::vector<int> fluids;
+  for (int r = 0; r < nm; ++r)
+    if (!st_.mat[r].external) fluids.push_back(r);
   if (adv_.mat.size() != static_cast<std::size_t>(nm)) {
     adv_.mat.assign(static_cast<std::size_t>(nm), {});
-    for (int r = 0; r < nm; ++r) {
-      if (st_.mat[r].external) continue;
+    for (std::size_t q = 2; q < fluids.size(); ++q)
       for (int d = 0; d < dim; ++d)
-        adv_.mat[r].massFlux[d] = core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
-    }
+        adv_.mat[static_cast<std::size_t>(fluids[q])].massFlux[d] =
+            core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
     adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
-    for (int d = 0; d < dim; ++d) adv_.momentum[static_cast<std::size_t>(d)].resize(npts);
-    adv_.energy.resize(npts);
-    adv_.eint.resize(npts);
-    adv_.mass.resize(npts);
   }
+  // One set of whole-box arrays serves the cell mixtures (computeCellMixes: the stable step to the
+  // face pressure) and the advection's conserved amounts and fluid mass: the mixtures are invalid
+  // from here to the next step's stable step, and the advection writes its arrays before it reads
+  // them. Likewise the face volume fluxes and face pressures (the pressure increment and the face
+  // pressure to the Lagrangian phase; computed again before the next step reads them) hold the
+  // first two fluids' mass fluxes. They are lent here and handed back at the end, storage and all
+  // (no allocation per step).
+  auto lend = [&] {
+    std::swap(adv_.energy, mixes_.rho);
+    std::swap(adv_.eint, mixes_.z);
+    std::swap(adv_.fluidMass, mixes_.p);
+    for (std::size_t d = 0; d < 3; ++d) std::swap(adv_.momentum[d], mixes_.u[d]);
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (!fluids.empty()) std::swap(adv_.mat[static_cast<std::size_t>(fluids[0])].massFlux[d], st_.volFlux[d]);
+      if (fluids.size() > 1) std::swap(adv_.mat[static_cast<std::size_t>(fluids[1])].massFlux[d], st_.pressFace[d]);
+    }
+  };
+  lend();
+  struct HandBack {
+    decltype(lend)& swap;
+    ~HandBack() { swap(); }
+  } handBack{lend};
+  // The stored box's size (the mixtures cover one layer less): grown once to exactly that
+  // (resize alone would double the capacity).
+  auto sizeTo = [](std::vector<double>& v, std::size_t n) {
+    if (v.capacity() < n) {
+      std::vector<double>().swap(v);
+      v.reserve(n);
+    }
+    v.resize(n);
+  };
+  for (int d = 0; d < dim; ++d) sizeTo(adv_.momentum[static_cast<std::size_t>(d)], npts);
+  sizeTo(adv_.energy, npts);
+  sizeTo(adv_.eint, npts);
+  // With one fluid advected here the negligible-trace cut-off of the conversion (below) compares
+  // its mass after advection with itself: never below kNegligibleMassFraction of it, no fluid
+  // mass to sum.
+  const bool oneFluid = fluids.size() == 1;
 
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   // The conserved amounts of the owned cells of the fluid being advected (advected::k* order): the
@@ -261,6 +306,7 @@ void IceSolver::advectFluids() {
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     const auto u = core::components(m.vel);
     const double* vL = m.spvolL.data();
+    const double* fluidMass = oneFluid ? a[kMass] : adv_.fluidMass.data();  // read before the cell's own write
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
@@ -270,7 +316,7 @@ void IceSolver::advectFluids() {
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
       // energy they held is audited). They keep the Lagrangian values (velocity and energy: as they are).
-      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * adv_.fluidMass[static_cast<std::size_t>(c)]) {
+      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * fluidMass[c]) {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         ms[c] = 0;
         v[c] = vL[c];
@@ -313,7 +359,7 @@ void IceSolver::advectFluids() {
       if constexpr (DIM > 0) {
         if (!cold) {
           const v4d mass = load(a[kMass] + c);
-          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(adv_.fluidMass.data() + c));
+          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(fluidMass + c));
           const v4d inv = 1.0 / mass;
           v4d ud[DIM], ke = lanes::splat(0.0);
           for (int d = 0; d < DIM; ++d) {
@@ -813,51 +859,56 @@ void IceSolver::advectFluids() {
     };
     // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
     // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
-    // order for every cell) summed apart.
-    adv_.fluidMass.assign(npts, 0.0);
-    for (int r = 0; r < nm; ++r) {
-      const MaterialState& m = st_.mat[r];
-      if (m.external) continue;
-      outflowScale(r);
-      std::copy(m.mass.data(), m.mass.data() + npts, adv_.mass.begin());
-      double* ma = adv_.mass.data();
-      const double* sc = outScale.data();
-      for (int d = 0; d < dim; ++d) {
-        const core::Box fb = owned_.faces(d);
-        const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
-        const std::int64_t sd = strides[d];
-        for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
-          for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
-            std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-            int i = fb.lo[0];
-            if (dim >= 2) {  // four faces at once (applyLanes); along x the inner faces only
-              const int jk = d == 1 ? j : k;
-              const bool ownL = d == 0 || jk > owned_.lo[d], ownR = d == 0 || jk <= owned_.hi[d];
-              const int i1 = d == 0 ? owned_.hi[0] : fb.hi[0];
-              if (d == 0) {  // the first face (a ghost on its low side) alone
+    // order for every cell) summed apart; with one fluid none (its outflow scale is then computed
+    // where it is advected).
+    if (!oneFluid) {
+      adv_.fluidMass.assign(npts, 0.0);
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        if (m.external) continue;
+        outflowScale(r);
+        // Its mass after advection in the conserved internal energy's array (free until the fluids'
+        // passes below fill it).
+        std::copy(m.mass.data(), m.mass.data() + npts, adv_.eint.begin());
+        double* ma = adv_.eint.data();
+        const double* sc = outScale.data();
+        for (int d = 0; d < dim; ++d) {
+          const core::Box fb = owned_.faces(d);
+          const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
+          const std::int64_t sd = strides[d];
+          for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
+            for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
+              std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
+              int i = fb.lo[0];
+              if (dim >= 2) {  // four faces at once (applyLanes); along x the inner faces only
+                const int jk = d == 1 ? j : k;
+                const bool ownL = d == 0 || jk > owned_.lo[d], ownR = d == 0 || jk <= owned_.hi[d];
+                const int i1 = d == 0 ? owned_.hi[0] : fb.hi[0];
+                if (d == 0) {  // the first face (a ghost on its low side) alone
+                  const double F = Fm[fi];
+                  if (F != 0) ma[cR] += (F > 0 ? sc[cR - sd] : sc[cR]) * F;
+                  ++i, ++fi, ++cR;
+                }
+                for (; i + 3 <= i1; i += 4, fi += 4, cR += 4) {
+                  const lanes::v4d F = lanes::load(Fm + fi);
+                  const lanes::v4m nz = F != 0;
+                  const lanes::v4d v = lanes::sel(F > 0, lanes::load(sc + cR - sd), lanes::load(sc + cR)) * F;
+                  applyLanes(ma, v, nz, cR - sd, cR, d == 0, ownL, ownR);
+                }
+              }
+              for (; i <= fb.hi[0]; ++i, ++fi, ++cR) {
                 const double F = Fm[fi];
-                if (F != 0) ma[cR] += (F > 0 ? sc[cR - sd] : sc[cR]) * F;
-                ++i, ++fi, ++cR;
-              }
-              for (; i + 3 <= i1; i += 4, fi += 4, cR += 4) {
-                const lanes::v4d F = lanes::load(Fm + fi);
-                const lanes::v4m nz = F != 0;
-                const lanes::v4d v = lanes::sel(F > 0, lanes::load(sc + cR - sd), lanes::load(sc + cR)) * F;
-                applyLanes(ma, v, nz, cR - sd, cR, d == 0, ownL, ownR);
+                if (F == 0) continue;
+                const std::int64_t cL = cR - sd;
+                const int id = d == 0 ? i : (d == 1 ? j : k);
+                const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
+                if (id > owned_.lo[d]) ma[cL] -= v;
+                if (id <= owned_.hi[d]) ma[cR] += v;
               }
             }
-            for (; i <= fb.hi[0]; ++i, ++fi, ++cR) {
-              const double F = Fm[fi];
-              if (F == 0) continue;
-              const std::int64_t cL = cR - sd;
-              const int id = d == 0 ? i : (d == 1 ? j : k);
-              const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
-              if (id > owned_.lo[d]) ma[cL] -= v;
-              if (id <= owned_.hi[d]) ma[cR] += v;
-            }
-          }
+        }
+        for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
       }
-      for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
     }
 
     // One fluid after the other: its outflow scale, isentrope fits and conserved amounts, pass 2
@@ -865,7 +916,8 @@ void IceSolver::advectFluids() {
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
-      restoreOutflowScale(r);
+      if (oneFluid) outflowScale(r);
+      else restoreOutflowScale(r);
       fitIsentropes(r);
       conserved(r);
       FluxPtrs P[3];

@@ -566,6 +566,17 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
 // (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
 const CellMixes& IceSolver::cellMixes() const {
   mixes_.lowMach = riemannLowMach_;
+  // Their arrays serve the advection in turn, over the stored box (advectFluids): reserved at that
+  // size at once, so that neither reallocates them (the freed smaller arrays were holes in the
+  // heap that the larger ones could not reuse: +2 doubles per cell of resident memory).
+  const auto npts = static_cast<std::size_t>(st_.press.box().numPts());
+  auto reserve = [&](std::vector<double>& v) {
+    if (v.capacity() < npts) v.reserve(npts);
+  };
+  reserve(mixes_.rho);
+  reserve(mixes_.z);
+  if (mixes_.lowMach) reserve(mixes_.p);
+  for (int d = 0; d < mesh_.dim(); ++d) reserve(mixes_.u[static_cast<std::size_t>(d)]);
   if (!mixesValid_) computeCellMixes(st_, owned_, mesh_.dim(), mixes_);
   mixesValid_ = true;
   return mixes_;

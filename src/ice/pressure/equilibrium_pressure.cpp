@@ -28,7 +28,7 @@ EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tol
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std::int64_t>& cells,
                                                            const std::vector<const double*>& rho,
                                                            const std::vector<const double*>& e, double* p,
-                                                           const std::vector<double*>& rhoMicro, double* iters,
+                                                           const std::vector<double*>& rhoMicro, int* iters,
                                                            const std::vector<const double*>* carriedVolume) {
   held_.clear();
   cavitated_.clear();
@@ -47,7 +47,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
 
 void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                                      const std::vector<const double*>& e, double* p,
-                                     const std::vector<double*>& rhoMicro, double* iters,
+                                     const std::vector<double*>& rhoMicro, int* iters,
                                      const std::vector<const double*>* carriedVolume,
                                      std::vector<EquilibriumFailure>& failures) {
   const std::size_t nm = eos_.size();

@@ -64,14 +64,14 @@ class EquilibriumPressure {
                       std::vector<bool> fluid = {}, double traceMassFraction = 0.0);
 
   /// cells: linear indices into the arrays; rho[r], e[r]: per material; p: in guess, out result;
-  /// rhoMicro[r]: out; iters: out (as double, it is written to a field). carriedVolume[r] (may
+  /// rhoMicro[r]: out; iters: out (the iterations per cell). carriedVolume[r] (may
   /// alias rhoMicro[r]: it is read first): each material's specific volume carried into the step,
   /// needed by the trace rule (nullptr: no trace rule). Returns the failures. The cells are
   /// solved in blocks of kBlock (scratch of the block's size, not the mesh's; each cell's
   /// iteration is its own, so the result does not depend on the blocks).
   std::vector<EquilibriumFailure> solve(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                                         const std::vector<const double*>& e, double* p,
-                                        const std::vector<double*>& rhoMicro, double* iters,
+                                        const std::vector<double*>& rhoMicro, int* iters,
                                         const std::vector<const double*>* carriedVolume = nullptr);
 
   [[nodiscard]] double traceMassFraction() const { return traceY_; }
@@ -88,7 +88,7 @@ class EquilibriumPressure {
   static constexpr std::size_t kBlock = 1024;
   void solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                   const std::vector<const double*>& e, double* p, const std::vector<double*>& rhoMicro,
-                  double* iters, const std::vector<const double*>* carriedVolume,
+                  int* iters, const std::vector<const double*>* carriedVolume,
                   std::vector<EquilibriumFailure>& failures);
   std::vector<const Eos*> eos_;
   double tol_;

@@ -44,17 +44,6 @@ void IceSolver::computeEquilibriumPressure() {
   if (const double Y = equil_->traceMassFraction(); Y > 0 && nm > 1) {
     std::vector<std::int64_t> tc;
     std::vector<double> te, tf;
-    // Each owned cell's fluid mass, once (the same sum for every fluid below; the loop changes
-    // energies only).
-    std::vector<double>& fluidMass = eqFluidMass_;
-    fluidMass.resize(ownedCells_.size());
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
-      double mf = 0;
-      for (const MaterialState& s : st_.mat)
-        if (!s.external) mf += s.mass.data()[c];
-      fluidMass[a] = mf;
-    }
     for (MaterialState& m : st_.mat) {
       if (m.external) continue;
       tc.clear();
@@ -63,7 +52,10 @@ void IceSolver::computeEquilibriumPressure() {
         const std::int64_t c = ownedCells_[a];
         const double mr = m.mass.data()[c];
         if (!(mr > 0)) continue;
-        const double mf = fluidMass[a];
+        // The cell's fluid mass (summed where it is read: the loop changes energies only).
+        double mf = 0;
+        for (const MaterialState& s : st_.mat)
+          if (!s.external) mf += s.mass.data()[c];
         if (mr < Y * mf) tc.push_back(c), te.push_back(m.eint.data()[c]);
       }
       tf.resize(tc.size());
@@ -170,33 +162,39 @@ void IceSolver::reportEquilibriumFailures(const std::vector<EquilibriumFailure>&
 void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>>& held,
                                   const std::vector<std::pair<int, std::int64_t>>& cavitated) {
   const int nm = numMaterials();
-  // Scratch kept from step to step (each entry is written before it is read).
+  // Scratch kept from step to step (each entry is written before it is read): the sound speed's
+  // batch a chunk of owned cells at a time (each cell's values are its own).
   std::vector<double>& ra = eqRho_;
   std::vector<double>& ea = eqE_;
   std::vector<double>& c2 = eqC2_;
+  const std::size_t chunk = kEquilibriumChunk, n = ownedCells_.size();
+  ra.resize(chunk);
+  ea.resize(chunk);
+  c2.resize(chunk);
   for (MaterialState& m : st_.mat) {
     double* th = m.theta.data();
     double* sv = m.spvol.data();
     double* ka = m.kappa.data();
     const double* en = m.eint.data();
-    ra.resize(ownedCells_.size());
-    ea.resize(ownedCells_.size());
-    c2.resize(ownedCells_.size());
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      ra[a] = sv[ownedCells_[a]];
-      ea[a] = en[ownedCells_[a]];
-    }
-    m.eos->soundSpeed2(ra.size(), ra.data(), ea.data(), c2.data());
     const double* ms = m.mass.data();
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
-      const double rm = ra[a];
-      th[c] = nm == 1 ? 1.0 : th[c] / rm;
-      sv[c] = 1.0 / rm;
-      ka[c] = 1.0 / (rm * c2[a]);
-      // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
-      // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
-      if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
+    for (std::size_t a0 = 0; a0 < n; a0 += chunk) {
+      const std::size_t nc = std::min(chunk, n - a0);
+      const std::int64_t* cells = ownedCells_.data() + a0;
+      for (std::size_t a = 0; a < nc; ++a) {
+        ra[a] = sv[cells[a]];
+        ea[a] = en[cells[a]];
+      }
+      m.eos->soundSpeed2(nc, ra.data(), ea.data(), c2.data());
+      for (std::size_t a = 0; a < nc; ++a) {
+        const std::int64_t c = cells[a];
+        const double rm = ra[a];
+        th[c] = nm == 1 ? 1.0 : th[c] / rm;
+        sv[c] = 1.0 / rm;
+        ka[c] = 1.0 / (rm * c2[a]);
+        // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
+        // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
+        if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
+      }
     }
   }
   // A trace held at its carried volume takes no share of the cell's volume change (and so does no
@@ -209,9 +207,6 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   for (const auto& [r, c] : cavitated)
     st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
 
-  double* pe = st_.pressEq.data();
-  const double* p = st_.press.data();
-  for (const std::int64_t c : ownedCells_) pe[c] = p[c];
   fillMaterialGhosts(false);
   if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_);
 }
@@ -264,51 +259,38 @@ void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& 
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
   }
-  // Their divergence: the face above cell (i, j, k) in direction d is its face index plus the
-  // face box's stride in d.
-  const double* U[3] = {nullptr, nullptr, nullptr};
-  std::int64_t fs[3] = {0, 0, 0};
-  core::Box fbs[3];
-  for (int d = 0; d < dim; ++d) {
-    U[d] = st.volFlux[d].data();
-    fbs[d] = owned.faces(d);
-    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
-  }
-  double* divU = st.divU.data();
-  double dxs[3] = {1, 1, 1};
-  for (int d = 0; d < dim; ++d) dxs[d] = mesh.dx(d);
-  // By rows (flat indices: c the stored cell, f[d] its low face normal to d).
-  for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
-    for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
-      std::int64_t c = sb.index(owned.lo[0], j, k), f[3] = {0, 0, 0};
-      for (int d = 0; d < dim; ++d) f[d] = fbs[d].index(owned.lo[0], j, k);
-      for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) {
-        double div = 0;
-        for (int d = 0; d < dim; ++d) {
-          div += (U[d][f[d] + fs[d]] - U[d][f[d]]) / dxs[d];
-          ++f[d];
-        }
-        divU[c] = div;
-      }
-    }
 }
 
-void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) {
+void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core::Box& owned, double dt) {
+  const int dim = mesh.dim();
   const core::Box& sb = st.press.box();
   const std::size_t nm = st.mat.size();
   std::vector<const double*> th(nm), ka(nm);
   for (std::size_t r = 0; r < nm; ++r) th[r] = st.mat[r].theta.data(), ka[r] = st.mat[r].kappa.data();
-  const double *divU = st.divU.data(), *pe = st.pressEq.data();
-  double *dpp = st.dp.data(), *p = st.press.data();
+  // The face volume fluxes (their divergence per cell), the face box's stride to a cell's high face.
+  const double* U[3] = {nullptr, nullptr, nullptr};
+  std::int64_t fs[3] = {0, 0, 0};
+  core::Box fbs[3];
+  double dxs[3] = {1, 1, 1};
+  for (int d = 0; d < dim; ++d) {
+    U[d] = st.volFlux[d].data();
+    fbs[d] = owned.faces(d);
+    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
+    dxs[d] = mesh.dx(d);
+  }
+  // p holds the equilibrium pressure (finishEquilibrium) and becomes p_eq + dp; the increment
+  // itself is kept only where st.dp is stored (the semi-implicit pressure's unknown).
+  double *dpp = st.dp.npts() > 0 ? st.dp.data() : nullptr, *p = st.press.data();
   bool anyCav = false;
   for (const MaterialState& m : st.mat) anyCav = anyCav || (!m.external && m.eos->cavitates());
-  // Stored cell c. NM > 0: the number of materials fixed at compile time (the same operations in
-  // the same order).
-  auto cell = [&]<int NM>(std::int64_t c) {
+  // Stored cell c, f[d] its low face normal to d. NM > 0: the number of materials fixed at
+  // compile time (the same operations in the same order).
+  auto cell = [&]<int NM>(std::int64_t c, const std::int64_t* f) {
     const std::size_t n = NM > 0 ? NM : nm;
     double kbar = 0;
     for (std::size_t r = 0; r < n; ++r) kbar += th[r][c] * ka[r][c];
-    double dp = kbar > 0 ? -dt * divU[c] / kbar : 0.0;
+    const double pe = p[c];
+    double dp = kbar > 0 ? -dt * volumeFluxDivergence(dim, U, f, fs, dxs) / kbar : 0.0;
     // A cavitating liquid's cut-off bounds the increment too (docs/ice.md "Cavitation"): a cell
     // that would expand through it in this step cavitates at it (its volume change beyond is the
     // cavity's, which the next equilibrium pressure finds).
@@ -317,17 +299,21 @@ void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt) 
       for (const MaterialState& m : st.mat)
         if (!m.external && m.mass.data()[c] > 0 && m.theta.data()[c] > kPresentFraction)
           pc = std::max(pc, m.eos->cavitationPressure());
-      if (pe[c] + dp < pc) dp = std::min(0.0, pc - pe[c]);
+      if (pe + dp < pc) dp = std::min(0.0, pc - pe);
     }
-    dpp[c] = dp;
-    p[c] = pe[c] + dp;
+    if (dpp) dpp[c] = dp;
+    p[c] = pe + dp;
   };
   // The owned cells in forEach's order, by rows (flat indices along each row).
   auto sweep = [&]<int NM>() {
     for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
       for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
-        std::int64_t c = sb.index(owned.lo[0], j, k);
-        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) cell.template operator()<NM>(c);
+        std::int64_t c = sb.index(owned.lo[0], j, k), f[3] = {0, 0, 0};
+        for (int d = 0; d < dim; ++d) f[d] = fbs[d].index(owned.lo[0], j, k);
+        for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) {
+          cell.template operator()<NM>(c, f);
+          for (int d = 0; d < dim; ++d) ++f[d];
+        }
       }
   };
   if (nm == 2) sweep.template operator()<2>();
@@ -340,7 +326,7 @@ void IceSolver::computePressureIncrement() {
     solveSemiImplicit();
   } else {
     computeVolumeFluxes(st_, mesh_, owned_);
-    explicitPressureIncrement(st_, owned_, dt_);
+    explicitPressureIncrement(st_, mesh_, owned_, dt_);
   }
   fillGhosts({{&st_.press, FieldKind::Pressure}}, {-1});
 }

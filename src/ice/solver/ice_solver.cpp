@@ -18,9 +18,9 @@ using core::forEach;
 
 IceSolver::~IceSolver() = default;
 
-IceSolver::IceSolver(const core::Scene& scene, const core::Comm& comm)
+IceSolver::IceSolver(const core::Scene& scene, const core::Comm& comm, bool coupledStart)
     : comm_(comm), mesh_(scene.mesh), decomp_(scene.mesh, comm.size(), scene.periodic()) {
-  initialize(scene);
+  initialize(scene, coupledStart);
 }
 
 void IceSolver::fillGhosts(const std::vector<std::pair<Field*, FieldKind>>& fields, const std::vector<int>& mats) {
@@ -390,7 +390,6 @@ void forCheckpointFields(State& st, F&& f) {
   for (auto& m : st.mat)
     for (auto* x : {&m.mass, &m.vel, &m.eint, &m.spvol, &m.theta, &m.kappa}) f(*x);
   f(st.press);
-  f(st.pressEq);
 }
 }  // namespace
 
@@ -412,6 +411,8 @@ void IceSolver::restore(const Checkpoint& c) {
 }
 
 void IceSolver::fitFluidsToExternalVolume() {
+  if (initialPressure_.npts() == 0)
+    throw std::logic_error("ice: fitFluidsToExternalVolume needs a solver built for a coupled start");
   mixesValid_ = false;
   const double V = mesh_.cellVolume();
   forEach(owned_, [&](int i, int j, int k) {
@@ -510,31 +511,40 @@ double IceSolver::density(int m, int i, int j, int k) const {
   return st_.mat[m].mass(i, j, k) / mesh_.cellVolume();
 }
 
-std::vector<Field> IceSolver::outputFields() const {
+std::vector<std::string> IceSolver::outputFieldNames() const {
+  std::vector<std::string> names{"pressure", "pressure_iterations"};
+  for (const MaterialState& m : st_.mat)
+    for (const char* q : {"_density", "_velocity", "_temperature", "_volume_fraction"}) names.push_back(m.name + q);
+  return names;
+}
+
+std::vector<Field> IceSolver::outputFields(const std::function<bool(const std::string&)>& wanted) const {
   using core::Centering;
   std::vector<Field> out;
-  auto make = [&](const std::string& n, int nc) { return Field(n, Centering::Cell, owned_, nc, 0); };
-  Field p = make("pressure", 1), it = make("pressure_iterations", 1);
-  forEach(owned_, [&](int i, int j, int k) {
-    p(i, j, k) = st_.press(i, j, k);
-    it(i, j, k) = st_.iters(i, j, k);
+  // Only the wanted fields are built (a field per owned cell each: all of them at once were the
+  // run's largest allocation).
+  auto want = [&](const std::string& n) { return !wanted || wanted(n); };
+  auto add = [&](const std::string& n, int nc, auto&& value) {
+    if (!want(n)) return;
+    Field f(n, Centering::Cell, owned_, nc, 0);
+    forEach(owned_, [&](int i, int j, int k) { value(f, i, j, k); });
+    out.push_back(std::move(f));
+  };
+  add("pressure", 1, [&](Field& f, int i, int j, int k) { f(i, j, k) = st_.press(i, j, k); });
+  const core::Box& sb = st_.press.box();
+  add("pressure_iterations", 1, [&](Field& f, int i, int j, int k) {
+    f(i, j, k) = st_.iters[static_cast<std::size_t>(sb.index(i, j, k))];
   });
-  out.push_back(std::move(p));
-  out.push_back(std::move(it));
   const double V = mesh_.cellVolume();
   for (const MaterialState& m : st_.mat) {
-    Field rho = make(m.name + "_density", 1), vel = make(m.name + "_velocity", 3),
-          T = make(m.name + "_temperature", 1), th = make(m.name + "_volume_fraction", 1);
-    forEach(owned_, [&](int i, int j, int k) {
-      rho(i, j, k) = m.mass(i, j, k) / V;
-      for (int d = 0; d < m.vel.ncomp(); ++d) vel(i, j, k, d) = m.vel(i, j, k, d);  // beyond: 0
-      T(i, j, k) = m.eos->temperature(1.0 / m.spvol(i, j, k), m.eint(i, j, k));
-      th(i, j, k) = m.theta(i, j, k);
+    add(m.name + "_density", 1, [&](Field& f, int i, int j, int k) { f(i, j, k) = m.mass(i, j, k) / V; });
+    add(m.name + "_velocity", 3, [&](Field& f, int i, int j, int k) {
+      for (int d = 0; d < m.vel.ncomp(); ++d) f(i, j, k, d) = m.vel(i, j, k, d);  // beyond: 0
     });
-    out.push_back(std::move(rho));
-    out.push_back(std::move(vel));
-    out.push_back(std::move(T));
-    out.push_back(std::move(th));
+    add(m.name + "_temperature", 1, [&](Field& f, int i, int j, int k) {
+      f(i, j, k) = m.eos->temperature(1.0 / m.spvol(i, j, k), m.eint(i, j, k));
+    });
+    add(m.name + "_volume_fraction", 1, [&](Field& f, int i, int j, int k) { f(i, j, k) = m.theta(i, j, k); });
   }
   return out;
 }

@@ -14,6 +14,7 @@
 ///   advectFluids()                 (step 12; ends the step: t += dt)
 /// Per-cell arrays of the coupling calls cover this rank's owned cells, x fastest; vectors are
 /// component-major (3 blocks). External materials are never advected here.
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -43,8 +44,10 @@ struct Totals {
 class IceSolver {
  public:
   /// Builds the state from the scene's fluid regions (solids become external materials).
-  /// Throws std::invalid_argument with the scene key for bad input.
-  IceSolver(const core::Scene& scene, const core::Comm& comm);
+  /// Throws std::invalid_argument with the scene key for bad input. coupledStart: keep the
+  /// scene's pressure per cell for fitFluidsToExternalVolume (a coupled run's start; ice_solver
+  /// alone has none and keeps no such field).
+  IceSolver(const core::Scene& scene, const core::Comm& comm, bool coupledStart = true);
   ~IceSolver();
 
   // ---- uncoupled driving
@@ -72,7 +75,8 @@ class IceSolver {
   /// each fluid's mass in every cell so that the fluids, at their initial micro state, fill
   /// exactly the volume the solids leave free (V - sum m_e v_e; a trace where the solids fill
   /// the cell). The solids' node-to-cell mass smears their surface over neighbouring cells; this
-  /// starts the fluids in pressure equilibrium with that smeared surface.
+  /// starts the fluids in pressure equilibrium with that smeared surface. Needs coupledStart
+  /// (std::logic_error without).
   void fitFluidsToExternalVolume();
   void computeEquilibriumPressure();
   void beginStep(double dt);
@@ -142,8 +146,11 @@ class IceSolver {
   /// Totals over every rank (collective).
   [[nodiscard]] Totals totals() const;
   /// Output fields over the owned cells: pressure, iterations, and per material density,
-  /// velocity, temperature, volume fraction (collective-free; built on demand).
-  [[nodiscard]] std::vector<core::Field> outputFields() const;
+  /// velocity, temperature, volume fraction (collective-free; built on demand, only those whose
+  /// name `wanted` accepts: all without it).
+  [[nodiscard]] std::vector<core::Field> outputFields(const std::function<bool(const std::string&)>& wanted = {}) const;
+  /// Their names, in outputFields' order (none built: output.fields is checked against them).
+  [[nodiscard]] std::vector<std::string> outputFieldNames() const;
   /// Material density m/V (per unit total volume) of material m in owned cell (i,j,k).
   [[nodiscard]] double density(int m, int i, int j, int k) const;
   /// Iterations of the last step's semi-implicit pressure solve (0 for the explicit pressure)
@@ -165,7 +172,7 @@ class IceSolver {
   [[nodiscard]] const EnergyAudit& energyAudit() const { return audit_; }
 
  private:
-  void initialize(const core::Scene& scene);
+  void initialize(const core::Scene& scene, bool coupledStart);
   /// The bound that sets the stable step (stableTimeStepLimit): on this rank, the cell (stored-box
   /// index) and the value of the bound there when `here`.
   struct StepBound {
@@ -246,18 +253,19 @@ class IceSolver {
   long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
   EnergyAudit audit_;
   std::array<InflowState, 6> inflow_{};
-  core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start)
+  core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start only)
   SemiImplicitScratch semi_;
   HeldShares held_;
-  // The equilibrium phase's scratch over the owned cells (kept from step to step: no allocation
-  // and zero fill per step): the fluid mass of the trace fix, the EOS batches of finishEquilibrium.
-  std::vector<double> eqFluidMass_, eqRho_, eqE_, eqC2_;
+  // The equilibrium phase's scratch (kept from step to step: no allocation per step): the EOS
+  // batches of finishEquilibrium, kEquilibriumChunk owned cells at a time.
+  static constexpr std::size_t kEquilibriumChunk = 512;
+  std::vector<double> eqRho_, eqE_, eqC2_;
   AdvectionScratch adv_;
   // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
   // velocities and the face pressure of a step (none of the phases between them changes mass,
   // velocity, theta, specific volume or kappa); invalid from the equilibrium, the sources, the
   // advection, a restore and whenever the state is set from outside (cellMixes() computes them
-  // again).
+  // again). Their arrays serve the advection in turn (advectFluids lends them).
   mutable CellMixes mixes_;
   // The semi-implicit stable step's mixture impedance per cell (owned box grown by one).
   mutable std::vector<double> impedanceScratch_;

@@ -1,5 +1,5 @@
-// IceSolver's restart state: every stored field (ghosts included, so the next step reads exactly
-// what it would have read), the clock and the counters. What the scene gives again (the EOS, the
+// IceSolver's restart state: every stored field a step reads before it writes it (ghosts
+// included, so the next step reads exactly what it would have read), the clock and the counters. What the scene gives again (the EOS, the
 // boundary conditions, the sources, the exchange coefficients, the initial pressure) the solver a
 // restart builds recomputes as the original run did; scratch is rewritten before it is read.
 #include <algorithm>
@@ -40,12 +40,9 @@ void forEveryField(State& st, F&& f) {
     f(cat(p, "dEnergy"), x.dEnergy);
   }
   f("press", st.press);
-  f("pressEq", st.pressEq);
   f("dp", st.dp);
-  f("iters", st.iters);
-  f("divU", st.divU);
-  for (int d = 0; d < 3; ++d) f(cat("volFlux", std::to_string(d)), st.volFlux[d]);
-  for (int d = 0; d < 3; ++d) f(cat("pressFace", std::to_string(d)), st.pressFace[d]);
+  // Not the face volume fluxes and face pressures: a step computes them before it reads them (and
+  // the advection's mass fluxes have their storage at the end of a step).
 }
 
 std::size_t sizeOf(const core::Field& f) { return static_cast<std::size_t>(f.npts() * f.ncomp()); }
@@ -55,6 +52,7 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   forEveryField(st_, [&](const std::string& name, const core::Field& f) {
     data.put(cat(cat(prefix, "."), name), std::span<const double>(f.data(), sizeOf(f)));
   });
+  data.put(prefix + ".iters", std::vector<double>(st_.iters.begin(), st_.iters.end()));  // counts, as doubles
   data.put(prefix + ".clock", std::vector<double>{t_, static_cast<double>(nsteps_), dt_, collapse_.first(),
                                                   static_cast<double>(fallbacks_), static_cast<double>(linIters_),
                                                   static_cast<double>(linItersTotal_), audit_.created, audit_.energy});
@@ -80,6 +78,11 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
     else
       data.copyTo(key, out);
   });
+  const std::vector<double>& it = data.get(prefix + ".iters");
+  if (it.size() != st_.iters.size())
+    throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".iters' has " +
+                                std::to_string(it.size()) + " values, expected " + std::to_string(st_.iters.size()));
+  std::transform(it.begin(), it.end(), st_.iters.begin(), [](double x) { return static_cast<int>(x); });
   const auto& c = data.get(prefix + ".clock");
   if (c.size() != 7 && c.size() != 9)  // 7: written before the energy audit (its sums start at 0)
     throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".clock' has " +

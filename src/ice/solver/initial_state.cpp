@@ -13,13 +13,13 @@
 
 namespace mpmice::ice {
 
-void IceSolver::initialize(const core::Scene& scene) {
+void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   mixesValid_ = false;
   const int dim = mesh_.dim();
   owned_ = decomp_.cellBox(comm_.rank());
   const core::Box stored = decomp_.storedBox(comm_.rank(), core::Centering::Cell, kGhost);
   ghosts_ = std::make_unique<core::GhostExchange>(decomp_, comm_, core::Centering::Cell, kGhost);
-  initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
+  if (coupledStart) initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
 
   // ---- options
   const core::IceOptions& o = scene.ice;
@@ -95,7 +95,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       badInput(scene.materials[r].cavitation.where,
                "materials." + st_.mat[r].name + ".cavitation: not available with ice.pressure_solver: semi_implicit "
                "(a cavitated cell's infinite compressibility is not in its linear system); use explicit");
-  st_.allocate(owned_, stored, dim);
+  st_.allocate(owned_, stored, dim, semiImplicit_);
   std::vector<bool> fluid;
   for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);
   equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations, fluid,
@@ -158,7 +158,7 @@ void IceSolver::initialize(const core::Scene& scene) {
       m.theta(i, j, k) = frac;
     }
     st_.press(i, j, k) = reg ? *reg->pressure : plan.fluid.empty() ? kReferencePressure : *plan.fluid.front()->pressure;
-    initialPressure_(i, j, k) = st_.press(i, j, k);
+    if (coupledStart) initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 
   // ---- boundaries

@@ -3,6 +3,7 @@
 /// (phase 5) and the advection (phase 12) keep so as not to allocate every step. Nothing in
 /// here is state: each phase overwrites what it reads before reading it.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -65,9 +66,10 @@ struct AdvectionScratch {
   /// per step for the fluid mass after advection, put back when the fluid is advected).
   std::vector<std::vector<std::pair<std::int64_t, double>>> capped;
   /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
-  /// m (e + |u|^2 / 2), m e; its mass after advection (for fluidMass).
+  /// m (e + |u|^2 / 2), m e (before the passes, each fluid's mass after advection, for fluidMass).
+  /// These, and fluidMass, are the cell mixtures' arrays, lent to the advection (advectFluids).
   std::array<std::vector<double>, 3> momentum;
-  std::vector<double> energy, eint, mass;
+  std::vector<double> energy, eint;
   /// Over the owned cells of two consecutive slabs, kRemSums arrays one after the other (a row's
   /// cells consecutive in each, for the lanes): the donor's mass left after its outflows and the
   /// outflows' sums the positivity blend needs (advection_phase.cpp).
@@ -80,8 +82,10 @@ struct AdvectionScratch {
   /// being advected (second order only): Gruneisen coefficient (NaN where the fit is not
   /// admissible) and pi, so that the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
   std::vector<double> isenGamma, isenPi;
-  std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection
-  std::vector<double> eosRho, eosE, eosP1, eosP2;  // batch EOS arguments of the isentrope fits
+  std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection (more than one fluid)
+  /// The batch EOS arguments of the isentrope fits, kEosChunk cells at a time.
+  static constexpr std::size_t kEosChunk = 512;
+  std::vector<double> eosRho, eosE, eosP1, eosP2;
 };
 
 }  // namespace mpmice::ice

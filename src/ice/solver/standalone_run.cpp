@@ -19,7 +19,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   if (!scene.solids().empty() && comm.root())
     log << "note: the scene has solid materials; ice_solver alone treats them as absent external "
            "materials (run the coupler for MPM-ICE)\n";
-  IceSolver solver(scene, comm);
+  IceSolver solver(scene, comm, /*coupledStart=*/false);
   core::RunCheckpoints checkpoints(scene, comm, scene.name, "ice_solver", restart, &log);
   const core::CheckpointData* resumed = checkpoints.resumed();
   if (resumed) solver.loadCheckpoint(*resumed, "ice");
@@ -48,14 +48,14 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
         0, resumed ? core::CsvWriter::Mode::Append : core::CsvWriter::Mode::Truncate);
   }
   // output.fields: refuse a name this program does not offer, before the first step.
-  std::vector<std::string> materials, offered;
+  std::vector<std::string> materials;
   for (const auto& m : scene.materials) materials.push_back(m.name);
-  for (const auto& f : solver.outputFields()) offered.push_back(f.name());
-  core::checkOutputFields(scene.output.fields, offered, materials, "ice_solver");
+  core::checkOutputFields(scene.output.fields, solver.outputFieldNames(), materials, "ice_solver");
   auto output = [&] {
     const Totals t = solver.totals();  // collective
     if (!writer) return;
-    const std::vector<core::Field> fields = core::selectFields(solver.outputFields(), scene.output.fields, materials);
+    const std::vector<core::Field> fields =
+        solver.outputFields([&](const std::string& n) { return core::outputSelected(scene.output.fields, n, materials); });
     std::vector<const core::Field*> ptrs;
     for (const auto& f : fields) ptrs.push_back(&f);
     writer->writeStep(static_cast<int>(solver.steps()), solver.time(), ptrs);
@@ -83,7 +83,10 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
     checkHealth(solver);  // collective: every rank stops on a non-physical state
     double maxIt = 0;
     const auto& it = solver.state().iters;
-    core::forEach(solver.ownedBox(), [&](int i, int j, int k) { maxIt = std::max(maxIt, it(i, j, k)); });
+    const core::Box& sb = solver.state().press.box();
+    core::forEach(solver.ownedBox(), [&](int i, int j, int k) {
+      maxIt = std::max(maxIt, double(it[static_cast<std::size_t>(sb.index(i, j, k))]));
+    });
     core::Progress::Extras extras{{"p_iters", comm.max(maxIt)}};
     if (solver.semiImplicit()) extras.emplace_back("lin_iters", double(solver.linearIterations()));
     progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), extras);

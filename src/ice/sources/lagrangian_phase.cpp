@@ -17,6 +17,7 @@
 
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
 
@@ -59,7 +60,6 @@ void IceSolver::computeSourcesAndLagrangian() {
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
-  const double* divU = st_.divU.data();
   // Per direction: the face pressures and volume fluxes, their face box, the stride to the face
   // above a cell, dx.
   const double *pF[3] = {nullptr, nullptr, nullptr}, *UF[3] = {nullptr, nullptr, nullptr};
@@ -92,7 +92,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       return std::isinf(P.ka[c]) ? P.th[c] / thetaCav : 0.0;
     };
     const double p = press[c];
-    const double div = divU[c];
+    const double div = volumeFluxDivergence(dim, UF, fls, fs, dxs);
     double gp[3] = {0, 0, 0};
     double dEflux = 0;
     for (int d = 0; d < dim; ++d) {

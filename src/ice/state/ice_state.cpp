@@ -2,7 +2,7 @@
 
 namespace mpmice::ice {
 
-void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim) {
+void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit) {
   using core::Centering;
   using core::Field;
   auto cell = [&](const std::string& n, int nc, double init = 0.0) {
@@ -27,10 +27,8 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
     m.couplingWork = m.external ? Field(m.name + "/coupling_work", Centering::Cell, owned, 1, 0) : Field();
   }
   press = cell("pressure", 1);
-  pressEq = cell("equilibrium_pressure", 1);
-  dp = cell("pressure_increment", 1);
-  iters = cell("pressure_iterations", 1);
-  divU = cell("velocity_divergence", 1);
+  dp = semiImplicit ? cell("pressure_increment", 1) : Field();
+  iters.assign(static_cast<std::size_t>(stored.numPts()), 0);
   for (int d = 0; d < dim; ++d) {
     pressFace[d] = Field("face_pressure", Centering::Cell, owned.faces(d), 1, 0);
     volFlux[d] = Field("face_volume_flux", Centering::Cell, owned.faces(d), 1, 0);

@@ -68,17 +68,23 @@ struct SolidFaces {
 
 struct IceState {
   std::vector<MaterialState> mat;
-  core::Field press;      // cell pressure (after the increment)
-  core::Field pressEq;    // equilibrium pressure of this step
-  core::Field dp;         // pressure increment
-  core::Field iters;      // equilibrium iterations per cell (diagnostic)
-  core::Field divU;       // div(sum_r theta_r u_f,r) per cell
-  std::array<core::Field, 3> volFlux;    // sum_r theta_r,f u_f,r per face (theta upwinded; empty beyond dim)
-  std::array<core::Field, 3> pressFace;  // empty beyond dim
+  /// Cell pressure: the equilibrium pressure of the step from the equilibrium phase to the pressure
+  /// increment, which adds to it (the equilibrium pressure is not kept apart).
+  core::Field press;
+  core::Field dp;         // pressure increment: the semi-implicit solve's unknown (empty with the explicit pressure)
+  /// Equilibrium iterations per stored cell (a diagnostic; the cell fields' indexing, press.box()),
+  /// a count: 4 bytes, not a double.
+  std::vector<int> iters;
+  /// Per face (empty beyond dim): sum_r theta_r,f u_f,r (theta upwinded) and the face pressure,
+  /// from the pressure increment and the face pressure to the Lagrangian phase; the advection
+  /// keeps the first two fluids' mass fluxes in them (advectFluids), so after a step they hold those.
+  std::array<core::Field, 3> volFlux;
+  std::array<core::Field, 3> pressFace;
   SolidFaces solidFaces;
 
-  /// Allocates every field over `stored` (cells) and the faces of `owned`.
-  void allocate(const core::Box& owned, const core::Box& stored, int dim);
+  /// Allocates every field over `stored` (cells) and the faces of `owned`; dp only with the
+  /// semi-implicit pressure.
+  void allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit);
 };
 
 }  // namespace mpmice::ice

@@ -6,6 +6,7 @@
 /// = low face of cell i); cell fields over the stored box, read at the owned cells and their face
 /// neighbours (their ghosts must be filled).
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "core/mesh/mesh.h"
@@ -29,12 +30,20 @@ struct CellMixes {
 /// volume and kappa filled); reuses x's storage.
 void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x);
 
-/// Face volume fluxes U_f = sum_r theta_r u_f,r (theta from the upwind cell; st.volFlux) and
-/// their divergence per owned cell (st.divU).
+/// Face volume fluxes U_f = sum_r theta_r u_f,r (theta from the upwind cell; st.volFlux).
 void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned);
-/// Explicit pressure increment dp = -dt div U / kbar (0 where kbar = 0; st.dp) and p = p_eq + dp
-/// per owned cell, from st.divU.
-void explicitPressureIncrement(IceState& st, const core::Box& owned, double dt);
+/// Their divergence div U at a cell: U[d] the volume fluxes normal to d, f[d] the cell's low face
+/// in them, fs[d] the stride to its high face. Computed where it is read (the pressure increment,
+/// the Lagrangian phase) rather than kept per cell: a few operations against a double per cell.
+inline double volumeFluxDivergence(int dim, const double* const* U, const std::int64_t* f, const std::int64_t* fs,
+                                   const double* dx) {
+  double div = 0;
+  for (int d = 0; d < dim; ++d) div += (U[d][f[d] + fs[d]] - U[d][f[d]]) / dx[d];
+  return div;
+}
+/// Explicit pressure increment dp = -dt div U / kbar (0 where kbar = 0) added to the equilibrium
+/// pressure st.press per owned cell (st.dp, where it is stored: the semi-implicit pressure).
+void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core::Box& owned, double dt);
 /// Face pressure p_f = (p_L / rho_L + p_R / rho_R) / (1 / rho_L + 1 / rho_R) (rho: the cells'
 /// mixture mass; the mean where both are empty; st.pressFace).
 /// Face pressures (density-weighted), plus the shock viscosity q = rho_f (q1 c_f |du| + q2 du^2) at

@@ -58,7 +58,8 @@ Cells makeCells(std::size_t n, const ice::Eos& water, const ice::Eos& air) {
 }
 
 struct Result {
-  std::vector<double> p, rm0, rm1, iters;
+  std::vector<double> p, rm0, rm1;
+  std::vector<int> iters;
   std::vector<std::pair<int, std::int64_t>> held;
   std::vector<std::int64_t> failed;
 };
@@ -69,7 +70,7 @@ Result solve(ice::EquilibriumPressure& eq, const Cells& c, bool oneByOne) {
   out.p.assign(size, 1e5);
   out.rm0.assign(size, 0.0);
   out.rm1.assign(size, 0.0);
-  out.iters.assign(size, -1.0);
+  out.iters.assign(size, -1);
   const std::vector<const double*> rho = {c.rho[0].data(), c.rho[1].data()}, e = {c.e[0].data(), c.e[1].data()},
                                    carried = {c.carried[0].data(), c.carried[1].data()};
   const std::vector<double*> rm = {out.rm0.data(), out.rm1.data()};

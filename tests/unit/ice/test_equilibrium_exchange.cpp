@@ -25,7 +25,8 @@ TEST(IceEquilibrium, TwoIdealGasesHaveAClosedForm) {
   const auto b = ice::makeEos(spec("ideal_gas", {{"gamma", 1.67}}), 3000);
   ice::EquilibriumPressure eq({a.get(), b.get()}, 1e-12, 100);
   std::vector<double> ra = {0.3, 0.0, 1.0}, rb = {0.5, 2.0, 1e-9}, ea = {2e5, 2e5, 3e5}, eb = {1e5, 4e5, 1e6};
-  std::vector<double> p = {1e5, 1e5, 1e5}, ma(3), mb(3), it(3);
+  std::vector<double> p = {1e5, 1e5, 1e5}, ma(3), mb(3);
+  std::vector<int> it(3);
   const auto fails = eq.solve({0, 1, 2}, {ra.data(), rb.data()}, {ea.data(), eb.data()}, p.data(),
                               {ma.data(), mb.data()}, it.data());
   ASSERT_TRUE(fails.empty());
@@ -52,7 +53,8 @@ TEST(IceEquilibrium, ThreeMaterialsAgainstBisection) {
   double lo = 1e3, hi = 1e10;  // independent reference: plain bisection
   for (int it = 0; it < 200; ++it) (f(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
   ice::EquilibriumPressure eq(eos, 1e-12, 100);
-  std::vector<double> p = {1e5}, m0(1), m1(1), m2(1), it(1);
+  std::vector<double> p = {1e5}, m0(1), m1(1), m2(1);
+  std::vector<int> it(1);
   const std::vector<double> r0 = {rho[0]}, r1 = {rho[1]}, r2 = {rho[2]}, e0 = {e[0]}, e1 = {e[1]}, e2 = {e[2]};
   const auto fails = eq.solve({0}, {r0.data(), r1.data(), r2.data()}, {e0.data(), e1.data(), e2.data()}, p.data(),
                               {m0.data(), m1.data(), m2.data()}, it.data());
@@ -65,7 +67,8 @@ TEST(IceEquilibrium, FailureIsReportedNotHidden) {
   const auto a = ice::makeEos(spec("ideal_gas", {{"gamma", 1.4}}), 717);
   const auto b = ice::makeEos(spec("ideal_gas", {{"gamma", 1.4}}), 717);
   ice::EquilibriumPressure eq({a.get(), b.get()}, 1e-12, 5);
-  std::vector<double> ra = {1.0}, rb = {1.0}, ea = {-1.0}, eb = {1e5}, p = {1e5}, ma(1), mb(1), it(1);
+  std::vector<double> ra = {1.0}, rb = {1.0}, ea = {-1.0}, eb = {1e5}, p = {1e5}, ma(1), mb(1);
+  std::vector<int> it(1);
   const auto fails = eq.solve({0}, {ra.data(), rb.data()}, {ea.data(), eb.data()}, p.data(), {ma.data(), mb.data()},
                               it.data());
   ASSERT_EQ(fails.size(), 1u);

@@ -92,7 +92,8 @@ void expectRoot(const std::vector<RecordingEos*>& eos, const std::vector<double>
       ep.push_back(en[r].data());
       mp.push_back(micro[r].data());
     }
-    std::vector<double> p = guesses, it(nc);
+    std::vector<double> p = guesses;
+    std::vector<int> it(nc);
     std::vector<std::int64_t> cells;
     for (std::size_t c = 0; c < nc; ++c) cells.push_back(static_cast<std::int64_t>(c));
     for (RecordingEos* x : eos) x->minMargin = std::numeric_limits<double>::infinity();
@@ -157,7 +158,8 @@ TEST(IceEquilibriumRobust, MieGruneisenWaterAgainstAirAndStiffenedGas) {
 TEST(IceEquilibriumRobust, NoAdmissibleStateNamesTheMaterial) {
   auto w = water(), a = air();
   ice::EquilibriumPressure eq({w.get(), a.get()}, 1e-11, 100);
-  std::vector<double> rw = {500.0}, ra = {0.6}, ew = {1e6}, ea = {-10.0}, p = {1e5}, mw(1), ma(1), it(1);
+  std::vector<double> rw = {500.0}, ra = {0.6}, ew = {1e6}, ea = {-10.0}, p = {1e5}, mw(1), ma(1);
+  std::vector<int> it(1);
   const auto fails = eq.solve({0}, {rw.data(), ra.data()}, {ew.data(), ea.data()}, p.data(), {mw.data(), ma.data()},
                               it.data());
   ASSERT_EQ(fails.size(), 1u);
@@ -173,7 +175,8 @@ TEST(IceEquilibriumRobust, NoRootAboveTheFloorIsAFailureNotAClamp) {
   const double e1 = 1e6, e2 = 1e6;
   const double F = -3e8;
   std::vector<double> r1 = {0.5 * w->density(F, e1)}, r2 = {0.3 * w2->density(F * (1 - 1e-12), e2)};
-  std::vector<double> en1 = {e1}, en2 = {e2}, p = {1e5}, m1(1), m2(1), it(1);
+  std::vector<double> en1 = {e1}, en2 = {e2}, p = {1e5}, m1(1), m2(1);
+  std::vector<int> it(1);
   ice::EquilibriumPressure eq({w.get(), w2.get()}, 1e-11, 200);
   const auto fails = eq.solve({0}, {r1.data(), r2.data()}, {en1.data(), en2.data()}, p.data(), {m1.data(), m2.data()},
                               it.data());

@@ -103,9 +103,10 @@ inline void traceCells(const ice::IceSolver& s, const std::string& name) {
     for (const auto& M : s.state().mat)
       std::printf(" | %s m %.3e th %.3e e %.4e v %.4e u %+.3e", M.name.c_str(), M.mass(i, 0, 0), M.theta(i, 0, 0),
                   M.eint(i, 0, 0), M.spvol(i, 0, 0), M.vel(i, 0, 0, 0));
-    // The step's face terms at the cell's low face: face pressure p_f and volume flux U_f.
-    std::printf(" | low face p_f %+.4e U_f %+.4e p_eq %+.4e\n", s.state().pressFace[0](i, 0, 0),
-                s.state().volFlux[0](i, 0, 0), s.state().pressEq(i, 0, 0));
+    // The pressure increment dp where it is kept (the semi-implicit pressure; the face pressures and
+    // volume fluxes hold the advection's mass fluxes after a step: ice_state.h).
+    if (s.state().dp.npts() > 0) std::printf(" | dp %+.4e", s.state().dp(i, 0, 0));
+    std::printf("\n");
   }
 }
 

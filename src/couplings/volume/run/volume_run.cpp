@@ -101,7 +101,9 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   auto output = [&](long n, double t) {
     std::vector<core::Field> fields;
     std::vector<const core::Field*> ptrs;
-    if (sides.fluid) fields = core::selectFields(sides.fluid->solver().outputFields(), scene.output.fields, materials);
+    if (sides.fluid)
+      fields = sides.fluid->solver().outputFields(
+          [&](const std::string& field) { return core::outputSelected(scene.output.fields, field, materials); });
     for (const auto& f : fields) ptrs.push_back(&f);
     core::ParticleOutput parts;
     if (sides.solid) parts = core::selectParticles(sides.solid->particleOutput(), scene.output.fields);
