@@ -150,6 +150,22 @@ void IceSolver::computeSourcesAndLagrangian() {
         C += P.m[c] * P.cv;
         solid = solid || (P.external && P.m[c] > 0);
       }
+      // Gives `share` [J] to fluid r unless it would drain its thermal energy e - e_cold (a
+      // Mie-Gruneisen liquid with a reference temperature T0 has e = 0 at T0: e < 0 is a state
+      // below T0, not below 0 K); returns whether it took it.
+      auto give = [&](int r, double share) {
+        const Ptr& P = ptr[r];
+        const double e0 = P.eL[c];
+        const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
+        const double ec = P.cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0;
+        if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) return false;
+        P.eL[c] = e1;
+        return true;
+      };
+      double left = 0;     // the shares fluids could not take [J]
+      unsigned took = 0;   // the fluids that took theirs (bit r)
+      int leftMat = -1;    // the fluid with the largest share not taken (the audit names it)
+      double leftMax = 0;
       for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
         const double share = (solid ? P.m[c] * P.cv / C : volumeShare(P)) * D;  // [J]
@@ -160,17 +176,33 @@ void IceSolver::computeSourcesAndLagrangian() {
           }
           continue;
         }
-        const double e0 = P.eL[c];
-        const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
-        // The thermal energy e - e_cold guards it (a Mie-Gruneisen liquid with a reference
-        // temperature T0 has e = 0 at T0: e < 0 is a state below T0, not below 0 K).
-        const double ec = P.cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0;
-        if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) {  // would drain it: keep e0
-          ++fallbacks_;
-          audit_.add(P.m[c] * (e0 - e1), c, r);  // the share of D not taken (audited)
+        if (give(r, share)) {
+          took |= 1u << r;
         } else {
-          P.eL[c] = e1;
+          ++fallbacks_;
+          left += share;
+          if (std::abs(share) > leftMax) leftMax = std::abs(share), leftMat = r;
         }
+      }
+      // A share one fluid could not take (a compressible trace, e.g. detonation products in water,
+      // holds most of theta kappa and so most of a negative D) goes to the fluids that took theirs,
+      // in proportion to their heat capacities; only what none of them can take is not conserved
+      // (audited). Before, the whole share was audited: 1 % of the underwater scene's energy at
+      // 2.5 mm cells (docs/slides.md).
+      if (left != 0) {
+        double Cf = 0;
+        for (int r = 0; r < n; ++r)
+          if (took >> r & 1u) Cf += ptr[r].m[c] * ptr[r].cv;
+        double lost = left;
+        if (Cf > 0) {
+          lost = 0;
+          for (int r = 0; r < n; ++r)
+            if (took >> r & 1u) {
+              const double s2 = ptr[r].m[c] * ptr[r].cv / Cf * left;
+              if (!give(r, s2)) lost += s2;
+            }
+        }
+        if (lost != 0) audit_.add(lost, c, leftMat);  // the share of D not taken (audited)
       }
     }
     if (anyGravity_)
