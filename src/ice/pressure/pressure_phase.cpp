@@ -267,17 +267,7 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
   const std::size_t nm = st.mat.size();
   std::vector<const double*> th(nm), ka(nm);
   for (std::size_t r = 0; r < nm; ++r) th[r] = st.mat[r].theta.data(), ka[r] = st.mat[r].kappa.data();
-  // The face volume fluxes (their divergence per cell), the face box's stride to a cell's high face.
-  const double* U[3] = {nullptr, nullptr, nullptr};
-  std::int64_t fs[3] = {0, 0, 0};
-  core::Box fbs[3];
-  double dxs[3] = {1, 1, 1};
-  for (int d = 0; d < dim; ++d) {
-    U[d] = st.volFlux[d].data();
-    fbs[d] = owned.faces(d);
-    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
-    dxs[d] = mesh.dx(d);
-  }
+  const VolumeFluxFaces faces(st, mesh, owned);  // their divergence per cell
   // p holds the equilibrium pressure (finishEquilibrium) and becomes p_eq + dp; the increment
   // itself is kept only where st.dp is stored (the semi-implicit pressure's unknown).
   double *dpp = st.dp.npts() > 0 ? st.dp.data() : nullptr, *p = st.press.data();
@@ -290,7 +280,7 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
     double kbar = 0;
     for (std::size_t r = 0; r < n; ++r) kbar += th[r][c] * ka[r][c];
     const double pe = p[c];
-    double dp = kbar > 0 ? -dt * volumeFluxDivergence(dim, U, f, fs, dxs) / kbar : 0.0;
+    double dp = kbar > 0 ? -dt * faces.divergence(dim, f) / kbar : 0.0;
     // A cavitating liquid's cut-off bounds the increment too (docs/ice.md "Cavitation"): a cell
     // that would expand through it in this step cavitates at it (its volume change beyond is the
     // cavity's, which the next equilibrium pressure finds).
@@ -309,7 +299,7 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
     for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
       for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
         std::int64_t c = sb.index(owned.lo[0], j, k), f[3] = {0, 0, 0};
-        for (int d = 0; d < dim; ++d) f[d] = fbs[d].index(owned.lo[0], j, k);
+        for (int d = 0; d < dim; ++d) f[d] = faces.box[d].index(owned.lo[0], j, k);
         for (int i = owned.lo[0]; i <= owned.hi[0]; ++i, ++c) {
           cell.template operator()<NM>(c, f);
           for (int d = 0; d < dim; ++d) ++f[d];

@@ -86,24 +86,14 @@ void IceSolver::assembleSemiImplicit() {
       coef(i, j, k) = dt * dt * b / dx2;
     });
   }
-  // The divergence of the face volume fluxes (volumeFluxDivergence): the faces' strides to a cell's high face.
-  const double* U[3] = {nullptr, nullptr, nullptr};
-  std::int64_t fs[3] = {0, 0, 0};
-  core::Box fbs[3];
-  double dxs[3] = {1, 1, 1};
-  for (int d = 0; d < dim; ++d) {
-    U[d] = st_.volFlux[d].data();
-    fbs[d] = owned_.faces(d);
-    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
-    dxs[d] = mesh_.dx(d);
-  }
+  const VolumeFluxFaces faces(st_, mesh_, owned_);  // the divergence of the face volume fluxes
   forEach(owned_, [&](int i, int j, int k) {
     double s = 0;
     for (const MaterialState& m : st_.mat) s += m.theta(i, j, k) * m.kappa(i, j, k);
     S.stencil.centre(i, j, k) = s;
-    const std::int64_t f[3] = {fbs[0].index(i, j, k), dim > 1 ? fbs[1].index(i, j, k) : 0,
-                               dim > 2 ? fbs[2].index(i, j, k) : 0};
-    S.rhs(i, j, k) = -dt * volumeFluxDivergence(dim, U, f, fs, dxs);
+    const std::int64_t f[3] = {faces.box[0].index(i, j, k), dim > 1 ? faces.box[1].index(i, j, k) : 0,
+                               dim > 2 ? faces.box[2].index(i, j, k) : 0};
+    S.rhs(i, j, k) = -dt * faces.divergence(dim, f);
   });
 }
 

@@ -66,6 +66,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   // Explicit pressure: max over cells of c sum_d 1 / dx_d (kMaxAcousticCourant's bound).
   double acoustic = 0;
   std::int64_t acousticCell = -1;
+  const bool acousticBoundOn = !semiImplicit_ && cfl_ > kMaxAcousticCourant;  // it cannot bind otherwise
   const int nm = numMaterials();
   const core::Box& sb = st_.press.box();
   std::int64_t rateCell = -1;
@@ -136,7 +137,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     double s = 0;
     for (int d = 0; d < nd; ++d)
       s += (semiImplicit_ ? std::max(umax[d], soundFraction_ * cs) : umax[d] + cs) / mesh_.dx(d);
-    if (!semiImplicit_) {
+    if (acousticBoundOn) {
       double a = 0;
       for (int d = 0; d < nd; ++d) a += cs / mesh_.dx(d);
       if (a > acoustic) {
@@ -184,7 +185,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   // is slow against c and time.cfl > kMaxAcousticCourant, this bound sets the step. At time.cfl <=
   // kMaxAcousticCourant it never does (c sum_d 1 / dx_d <= sum_d (|u_d| + c) / dx_d cell by cell).
   bool acousticBound = false;
-  if (!semiImplicit_ && cfl_ > kMaxAcousticCourant) {
+  if (acousticBoundOn) {
     acoustic = comm_.max(acoustic);
     if (acoustic > 0 && kMaxAcousticCourant / acoustic < dt) {
       dt = kMaxAcousticCourant / acoustic;

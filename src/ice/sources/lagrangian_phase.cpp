@@ -60,19 +60,15 @@ void IceSolver::computeSourcesAndLagrangian() {
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
-  // Per direction: the face pressures and volume fluxes, their face box, the stride to the face
-  // above a cell, dx.
-  const double *pF[3] = {nullptr, nullptr, nullptr}, *UF[3] = {nullptr, nullptr, nullptr};
-  core::Box fbs[3];
-  std::int64_t fs[3] = {0, 0, 0};
-  double dxs[3] = {1, 1, 1};
-  for (int d = 0; d < dim; ++d) {
-    pF[d] = st_.pressFace[d].data();
-    UF[d] = st_.volFlux[d].data();
-    fbs[d] = st_.pressFace[d].box();
-    fs[d] = d == 0 ? 1 : (d == 1 ? fbs[d].length(0) : std::int64_t(fbs[d].length(0)) * fbs[d].length(1));
-    dxs[d] = mesh_.dx(d);
-  }
+  // Per direction: the face volume fluxes (their face box, the stride to the face above a cell,
+  // dx) and the face pressures on the same faces.
+  const VolumeFluxFaces faces(st_, mesh_, owned_);
+  const double* const* UF = faces.U;
+  const core::Box* fbs = faces.box;
+  const std::int64_t* fs = faces.stride;
+  const double* dxs = faces.dx;
+  const double* pF[3] = {nullptr, nullptr, nullptr};
+  for (int d = 0; d < dim; ++d) pF[d] = st_.pressFace[d].data();
   // One owned cell: stored index c, oc its index in the owned box (an external material's coupling
   // work and exchange energy), fls[d] the index of its low face normal to d. NM > 0:
   // the number of materials fixed at compile time (the small loops unroll; the same operations in
@@ -92,7 +88,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       return std::isinf(P.ka[c]) ? P.th[c] / thetaCav : 0.0;
     };
     const double p = press[c];
-    const double div = volumeFluxDivergence(dim, UF, fls, fs, dxs);
+    const double div = faces.divergence(dim, fls);
     double gp[3] = {0, 0, 0};
     double dEflux = 0;
     for (int d = 0; d < dim; ++d) {

@@ -41,6 +41,27 @@ inline double volumeFluxDivergence(int dim, const double* const* U, const std::i
   for (int d = 0; d < dim; ++d) div += (U[d][f[d] + fs[d]] - U[d][f[d]]) / dx[d];
   return div;
 }
+/// The face volume fluxes as the cell loops read them, per direction of the mesh: the fluxes U
+/// (st.volFlux), their face box (owned.faces(d): box[d].index(i, j, k) is cell (i, j, k)'s low
+/// face), the stride from a cell's low face to its high one, and dx.
+struct VolumeFluxFaces {
+  const double* U[3] = {nullptr, nullptr, nullptr};
+  core::Box box[3];
+  std::int64_t stride[3] = {0, 0, 0};
+  double dx[3] = {1, 1, 1};
+  VolumeFluxFaces(const IceState& st, const core::Mesh& mesh, const core::Box& owned) {
+    for (int d = 0; d < mesh.dim(); ++d) {
+      U[d] = st.volFlux[d].data();
+      box[d] = owned.faces(d);
+      stride[d] = d == 0 ? 1 : (d == 1 ? box[d].length(0) : std::int64_t(box[d].length(0)) * box[d].length(1));
+      dx[d] = mesh.dx(d);
+    }
+  }
+  /// div U at the cell whose low faces are f[d].
+  [[nodiscard]] double divergence(int dim, const std::int64_t* f) const {
+    return volumeFluxDivergence(dim, U, f, stride, dx);
+  }
+};
 /// Explicit pressure increment dp = -dt div U / kbar (0 where kbar = 0) added to the equilibrium
 /// pressure st.press per owned cell (st.dp, where it is stored: the semi-implicit pressure).
 void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core::Box& owned, double dt);
