@@ -364,12 +364,16 @@ def study_3d(args):
         rho = rho_slides.get(round(a * 1e3, 1), float("nan"))
         r2 = two_d.get(round(a * 1e3, 1), {})
         plateau = band_mean(strain, stress, 0.2, 0.4) if strain[-1] >= 0.4 else float("nan")
+        # densification (largest energy efficiency past 20 %) and the energy to it, as the 2D study
+        _, e_d, w_d = summarize(strain, stress) if strain[-1] >= 0.4 else (0, float("nan"), float("nan"))
         rows += [(name, a, e, st) for e, st in zip(strain, stress)]
         summary.append({"scene": name, "a_mm": a * 1e3, "rho_rel_slides": rho, "rho_rel_particles": vol0 / a ** 3,
                         "first_yield_MPa": band_mean(strain, stress, 0.04, 0.12) / 1e6, "plateau_MPa": plateau / 1e6,
                         "plateau_2d_MPa": float(r2.get("plateau_MPa", "nan")),
                         "first_yield_2d_MPa": float(r2.get("first_yield_MPa", "nan")),
                         "gibson_ashby_MPa": 0.3 * rho ** 1.5 * SIGMA_Y / 1e6,
+                        "densification_strain": e_d, "absorbed_to_densification_MJ_per_m3": w_d / 1e6,
+                        "plateau_2d_densification": float(r2.get("densification_strain", "nan")),
                         "peak_to_12pct_MPa": float(np.max(stress[strain <= 0.12])) / 1e6,
                         "end_strain": float(strain[-1]), "particles": particles, "steps": steps, "wall_s": wall})
     with open(os.path.join(out, "lattice3d_stress_strain.csv"), "w") as f:
@@ -385,6 +389,24 @@ def study_3d(args):
             f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
     for r in summary:
         print(", ".join(f"{k} {r[k]:.4g}" if isinstance(r[k], float) else f"{k} {r[k]}" for k in keys))
+    # The 3D curves (solid) beside the 2D square grids' (dashed, from the 2D summary's directory).
+    png = os.path.join(out, "lattice3d_stress_strain.png")
+    csv3 = os.path.join(out, "lattice3d_stress_strain.csv")
+    csv2 = os.path.join(os.path.dirname(args.compare2d), "lattice_stress_strain.csv")
+    colours = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}
+    plots = []
+    for r in summary:
+        a, c = round(r["a_mm"], 1), colours.get(round(r["a_mm"], 1), "black")
+        plots.append(f"'< grep ^{r['scene']}, {csv3}' using 3:4 with lines lw 2 lc rgb '{c}' "
+                     f"title '3D, a = {a:.1f} mm'")
+        if os.path.exists(csv2):
+            tag = f"lattice_a{int(round(a * 10))},"
+            plots.append(f"'< grep ^{tag} {csv2}' using 3:4 with lines lw 1 dt 2 lc rgb '{c}' title '2D, a = {a:.1f} mm'")
+    gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
+          f"set xlabel 'nominal strain'; set ylabel 'nominal stress (plate force / a^2) [MPa]'; set grid;"
+          f"set title '3D cells (eighth model, mesh {args.mesh3d * 1e3:g} mm, 1000 1/s) and the 2D square grids';"
+          f"set key top left; plot {', '.join(plots)}")
+    gnuplot(gp, png)
 
 
 def main():

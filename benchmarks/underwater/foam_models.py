@@ -47,6 +47,7 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 SCENE = os.path.join(ROOT, "configs", "underwater_foam_2d.yaml")
+SCENE_3D = os.path.join(ROOT, "configs", "underwater_foam_3d.yaml")
 CHARGE_BOTTOM = 0.238           # [m], the scene's charge box
 FOAM_THICKNESS = 0.03
 FOAM_BOTTOM = 0.148             # the cut's bottom: foam top 6 cm below the charge
@@ -63,7 +64,16 @@ MODELS = ["water", "air", "none"]
 P_AMBIENT = 1.0e5
 
 
-def scene(model, end, full=False):
+def scene(model, end, full=False, dim=2):
+    if dim == 3:   # the 3D quarter model as shipped: the foam on the bottom, the axis at x = z = 0
+        s = yaml.safe_load(open(SCENE_3D))
+        s["scene"] = f"underwater_foam_3d_{model}"
+        s["description"] = f"Underwater shock on the foam 21 cm below the charge, 3D quarter model, foam model '{model}'"
+        s["time"]["end"] = end
+        foam_material(s, model)
+        s["output"]["directory"] = s["scene"]
+        s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, FOAM_THICKNESS, 0.0]}]
+        return s
     s = yaml.safe_load(open(SCENE))
     if full:   # the shipped scene's depth: the foam on the container's bottom, 21 cm below the charge
         s["scene"] = f"underwater_foam_full_{model}"
@@ -103,22 +113,32 @@ def foam_material(s, model):
 
 
 def histories(directory, name, dy, bottom):
-    """Per output: time, the water pressure at PROBES, the bottom stress."""
+    """Per output: time, the water pressure at PROBES, the bottom stress. In 3D the probes lie in the
+    z = 0 symmetry plane (the first layer of cells, which holds the axis) and the bottom stress is
+    averaged within FOOT of the axis in x and z (a quarter disc)."""
     rows = []
     for f in sorted(glob.glob(os.path.join(directory, f"{name}_[0-9][0-9][0-9][0-9][0-9][0-9].h5"))):
         with h5py.File(f, "r") as h:
             t = float(h.attrs["time"])
             o, d = h.attrs["origin"], h.attrs["spacing"]
-            p = h["grid/cell/pressure"][0]
+            cells = h["grid/cell/pressure"][:]              # (z, y, x); 2D: z has one layer
+            p = cells[0]
             probe = [float(p[int((y - o[1]) / d[1]), int((x - o[0]) / d[0])]) for _, x, y in probes(bottom)]
             pos = h["particles/position"][:]
             st = h["particles/stress"][:]
             syy = st[:, 1]                                   # (xx, yy, zz, xy, yz, xz)
-            foot = (pos[:, 1] < bottom + 0.5 * dy) & (pos[:, 0] < FOOT)
+            three = cells.shape[0] > 1
+            radius = np.hypot(pos[:, 0], pos[:, 2]) if three else pos[:, 0]
+            foot = (pos[:, 1] < bottom + 0.5 * dy) & (radius < FOOT)
             # the normal stress on the bottom: the cells' pressure (above the ambient) on the mixture
             # plus the foam's own stress, over the bottom row within FOOT of the axis
             nfoot = max(1, int(round(FOOT / d[0])))
-            p_bottom = float(np.mean(p[0, :nfoot])) - P_AMBIENT
+            if three:
+                xc = (np.arange(nfoot) + 0.5) * d[0]
+                near = np.hypot(xc[:, None], xc[None, :]) < FOOT   # (z, x) cells of the bottom row
+                p_bottom = float(np.mean(cells[:nfoot, 0, :nfoot][near])) - P_AMBIENT
+            else:
+                p_bottom = float(np.mean(p[0, :nfoot])) - P_AMBIENT
             rows.append([t] + probe + [p_bottom - float(np.mean(syy[foot])) if np.any(foot) else float("nan")])
     return np.array(rows)
 
@@ -135,6 +155,8 @@ def main():
     ap.add_argument("--full", action="store_true",
                     help="the shipped scene's depth (foam on the bottom, 21 cm below the charge; needs the water's "
                          "cavitation model to run past 49.5 us); use --end 1.5e-4")
+    ap.add_argument("--dim", type=int, choices=[2, 3], default=2,
+                    help="3: the 3D quarter model (configs/underwater_foam_3d.yaml) at its depth; use --end 1.5e-4")
     args = ap.parse_args()
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
@@ -142,7 +164,7 @@ def main():
     models = args.models.split(",")
     procs = []
     for m in models:
-        s = scene(m, args.end, args.full)
+        s = scene(m, args.end, args.full, args.dim)
         path = os.path.join(out, s["scene"] + ".yaml")
         yaml.safe_dump(s, open(path, "w"), sort_keys=False)
         if not args.skip_run:
@@ -155,10 +177,12 @@ def main():
             procs = []
     summary, curves = [], []
     for m in models:
-        name = f"underwater_foam_full_{m}" if args.full else f"underwater_foam_{m}"
-        bottom = 0.0 if args.full else FOAM_BOTTOM
+        name = f"underwater_foam_3d_{m}" if args.dim == 3 else f"underwater_foam_full_{m}" if args.full \
+            else f"underwater_foam_{m}"
+        bottom = 0.0 if args.full or args.dim == 3 else FOAM_BOTTOM
         d = os.path.join(out, name)
-        dy = yaml.safe_load(open(os.path.join(out, name + ".yaml")))["mesh"]["spacing"][1]
+        spacing = yaml.safe_load(open(os.path.join(out, name + ".yaml")))["mesh"]["spacing"]
+        dy = float(spacing[1] if isinstance(spacing, list) else spacing)
         pr = list(csv.DictReader(open(os.path.join(d, name + "_probes.csv"))))
         tp = np.array([float(r["time"]) for r in pr])
         thick = FOAM_THICKNESS + np.array([float(r["foam_top_uy"]) for r in pr])

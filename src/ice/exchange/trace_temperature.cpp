@@ -29,6 +29,7 @@
 // (dEnergy).
 #include <cmath>
 
+#include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 
 namespace mpmice::ice {
@@ -71,6 +72,12 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       // expanding water took its heat from a PVC tube's corner particles to below 0 K).
       const double Cf = mass * m.eos->cv();
       const double de = wf * m.eos->cv() * Cs / (Cs + Cf) * (dTs - dTown);
+      // A change that would leave the fluid less than kMinEnergyShare of its thermal energy
+      // e - e_cold is not taken (the Lagrangian energy fix's guard): the rule moves temperature
+      // changes, and a trace the ratchet above has already cooled towards 0 K would be taken below
+      // it by a solid's small cooling (a buffer gas in a filled lattice's polymer, docs/slides.md).
+      const double ec = m.eos->coldEnergy(1.0) != 0.0 ? m.eos->coldEnergy(1.0 / m.spvolL.data()[c]) : 0.0;
+      if (e - ec > 0 && e + de - ec < kMinEnergyShare * (e - ec)) continue;
       e += de;
       Q += mass * de;
     }
