@@ -907,7 +907,7 @@ void IceSolver::advectFluids() {
               }
             }
         }
-        for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
+        ownedCells_.forEach([&](std::size_t, std::int64_t c) { adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c]; });
       }
     }
 
