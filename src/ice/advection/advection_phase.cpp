@@ -150,10 +150,9 @@ struct FaceValueLanes {
 // e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma with pi = P / (Gamma + 1) (exactly the
 // isentrope of an ideal or stiffened gas). Gamma is NaN where the fit is not admissible (e <= 0,
 // v <= 0, Gamma <= 0, e_c - pi v_c <= 0, non-finite): faces touching that cell are not bounded.
-void isentropeFits(const Eos& eos, std::size_t n, const double* v, const double* e, AdvectionScratch& s,
-                   std::vector<double>& gam, std::vector<double>& pi) {
-  gam.resize(n);
-  pi.resize(n);
+// Cells v[0 .. n - 1], e[0 .. n - 1] to gam[0 .. n - 1], pi[0 .. n - 1].
+void isentropeFits(const Eos& eos, std::size_t n, const double* v, const double* e, AdvectionScratch& s, double* gam,
+                   double* pi) {
   // The batch EOS arguments a chunk of cells at a time (each cell's fit is its own: the same
   // values as over the whole box, without four more arrays of the box).
   const std::size_t chunk = AdvectionScratch::kEosChunk;
@@ -199,12 +198,14 @@ inline bool singleFluid(double theta) { return theta >= 1.0 - kPresentFraction; 
 // principle). Independent limited reconstructions of e and v can pair them off their
 // isentropes: Toro's test 3 then carried an entropy deficit of 4-6 % from its young shock into
 // the gas between contact and shock (+3 % in density at 200 cells, docs/ice.md "Shocks").
+// gam, pi: the fits of stored cell c at c - off (AdvectionScratch::isenGamma: a window of slabs).
 inline double entropyBounded(double ef, double vf, std::int64_t D, std::int64_t O, const double* e, const double* v,
-                             const double* gam, const double* pi) {
-  const double gD = gam[D], gO = gam[O];
+                             const double* gam, const double* pi, std::int64_t off) {
+  const double gD = gam[D - off], gO = gam[O - off];
   if (!(gD > 0 && gO > 0 && vf > 0)) return ef;
-  const double eD = pi[D] * vf + (e[D] - pi[D] * v[D]) * std::pow(v[D] / vf, gD);
-  const double eO = pi[O] * vf + (e[O] - pi[O] * v[O]) * std::pow(v[O] / vf, gO);
+  const double pD = pi[D - off], pO = pi[O - off];
+  const double eD = pD * vf + (e[D] - pD * v[D]) * std::pow(v[D] / vf, gD);
+  const double eO = pO * vf + (e[O] - pO * v[O]) * std::pow(v[O] / vf, gO);
   if (!(std::isfinite(eD) && std::isfinite(eO))) return ef;
   return std::clamp(ef, std::min(eD, eO), std::max(eD, eO));
 }
@@ -601,18 +602,48 @@ void IceSolver::advectFluids() {
     // with superbee and water against air with superbee stopped on a negative temperature
     // (docs/ice.md "The full sweep").
     const bool entropyBound = Second && riemannFacePressureOn();
-    // One fluid's fits at a time (the passes below take the fluids one after the other).
+    // One fluid's fits at a time (the passes below take the fluids one after the other), over
+    // two slabs of stored cells only (rows in 2D, planes in 3D, along the last direction: the
+    // flux passes sweep them in order, and a face reads the fits of the two cells beside it): the
+    // fits of stored cell c at c - fitOffset, slabs s - 1 and s consecutive as in the stored box.
     // The fits are read only at faces between two cells the fluid fills alone (faceState): where
-    // it fills none (every cell mixed), they are not made.
+    // it fills none (every cell mixed), they are not made (fitsOn false).
+    const int top = dim - 1;
+    const std::int64_t slabStored = top == 0 ? 1 : (top == 1 ? sb.length(0) : std::int64_t(sb.length(0)) * sb.length(1));
+    bool fitsOn = false;
+    std::int64_t fitOffset = 0;
     auto fitIsentropes = [&](int r) {
       const MaterialState& m = st_.mat[r];
+      fitsOn = false;
       if (!entropyBound) return;
       const double* th = m.theta.data();
       bool alone = false;
       std::size_t c = 0;
       for (; c + 4 <= npts && !alone; c += 4) alone = lanes::any(lanes::load(th + c) >= 1.0 - kPresentFraction);  // singleFluid
       for (; c < npts && !alone; ++c) alone = singleFluid(th[c]);
-      if (alone) isentropeFits(*m.eos, npts, m.spvolL.data(), m.eint.data(), adv_, adv_.isenGamma, adv_.isenPi);
+      fitsOn = alone;
+      if (alone) {
+        adv_.isenGamma.resize(static_cast<std::size_t>(2 * slabStored));
+        adv_.isenPi.resize(static_cast<std::size_t>(2 * slabStored));
+      }
+    };
+    // The window at slab s (stored slabs s - 1 and s) of fluid r, from the window at slab s - 1
+    // (next) or afresh. Each cell's fit is its own: the values of a fit over the whole box.
+    auto fitWindow = [&](int r, int s, bool next) {
+      if (!fitsOn) return;
+      const MaterialState& m = st_.mat[r];
+      const std::size_t S = static_cast<std::size_t>(slabStored);
+      double *g = adv_.isenGamma.data(), *pi = adv_.isenPi.data();
+      const double *v = m.spvolL.data(), *e = m.eint.data();
+      const std::int64_t lo = std::int64_t(s - 1 - sb.lo[top]) * slabStored;  // slab s - 1's first stored cell
+      if (next) {
+        std::copy(g + S, g + 2 * S, g);
+        std::copy(pi + S, pi + 2 * S, pi);
+      } else {
+        isentropeFits(*m.eos, S, v + lo, e + lo, adv_, g, pi);
+      }
+      isentropeFits(*m.eos, S, v + lo + slabStored, e + lo + slabStored, adv_, g + S, pi + S);
+      fitOffset = lo;
     };
 
     // The face values of one fluid at one face: velocity (the mesh's dimension of components),
@@ -631,7 +662,8 @@ void IceSolver::advectFluids() {
       f.e = face(eL);
       if constexpr (Second) {
         const std::int64_t O = face.D == cL ? cR : cL;
-        if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O])) f.e = entropyBounded(f.e, f.v, face.D, O, eL, vL, isG, isP);
+        if (entropyBound && singleFluid(th[face.D]) && singleFluid(th[O]))
+          f.e = entropyBounded(f.e, f.v, face.D, O, eL, vL, isG, isP, fitOffset);
       } else {
         (void)cR, (void)th, (void)isG, (void)isP;
       }
@@ -671,7 +703,6 @@ void IceSolver::advectFluids() {
     // faces' terms in the order x low, x high, y low, y high, z low, z high (the order of a sweep
     // per direction), and a slab's sums are complete once the faces above it are done: only two
     // slabs of sums are kept.
-    const int top = dim - 1;
     auto slab = [&](int s) {  // the owned cells with index s in top
       core::Box b = owned_;
       b.lo[top] = b.hi[top] = s;
@@ -748,7 +779,7 @@ void IceSolver::advectFluids() {
                 for (int l = 0; l < 4; ++l)
                   if (b[l]) {
                     const std::int64_t D = face.up[l] ? cL + l : cR + l, O = face.up[l] ? cR + l : cL + l;
-                    fe[l] = entropyBounded(fe[l], fv[l], D, O, P.eL, P.vL, P.isG, P.isP);
+                    fe[l] = entropyBounded(fe[l], fv[l], D, O, P.eL, P.vL, P.isG, P.isP, fitOffset);
                   }
             }
           }
@@ -907,7 +938,7 @@ void IceSolver::advectFluids() {
               }
             }
         }
-        for (const std::int64_t c : ownedCells_) adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c];
+        ownedCells_.forEach([&](std::size_t, std::int64_t c) { adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c]; });
       }
     }
 
@@ -926,8 +957,30 @@ void IceSolver::advectFluids() {
       const double *eL = m.eint.data(), *vL = m.spvolL.data();
       const bool cold = m.eos->coldEnergy(1.0) != 0.0;
       adv_.blends.clear();
-      auto row = [&](int d, int j, int k, int ihi) { pass2Row(P[d], d, j, k, owned_.lo[0], ihi); };
+      // The faces of slab s (lo[top] .. hi[top] + 1) in the flux passes' order: with s <= hi[top]
+      // those inside it (along x; in 3D x and y row by row), then its low faces in top (the
+      // slabs in order give every cell its faces' terms in the order x low, x high, y low, y
+      // high, z low, z high). row(d, j, k, ilo, ihi): the faces normal to d from (ilo, j, k) to (ihi, j, k).
+      auto slabFaces = [&](int s, auto&& row) {
+        const int ilo = owned_.lo[0], ihi = owned_.hi[0];
+        if (s <= owned_.hi[top]) {
+          if (dim == 2) row(0, s, owned_.lo[2], ilo, ihi + 1);
+          if (dim == 3) {
+            for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
+              row(0, j, s, ilo, ihi + 1);
+              row(1, j, s, ilo, ihi);
+            }
+            row(1, owned_.hi[1] + 1, s, ilo, ihi);
+          }
+        }
+        if (dim == 1) row(0, owned_.lo[1], owned_.lo[2], s, s);
+        if (dim == 2) row(1, s, owned_.lo[2], ilo, ihi);
+        if (dim == 3)
+          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, ilo, ihi);
+      };
+      auto row = [&](int d, int j, int k, int ilo, int ihi) { pass2Row(P[d], d, j, k, ilo, ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
+        fitWindow(r, s, s != owned_.lo[top]);
         if (s <= owned_.hi[top]) {
           auto init = [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
             R[kRemMass * rs] = ms[c];
@@ -940,20 +993,8 @@ void IceSolver::advectFluids() {
                 for (int q = 1; q < kRemSums; ++q) lanes::store(R + q * rs, lanes::splat(0.0));
               },
               init);
-          if (dim == 2) row(0, s, owned_.lo[2], owned_.hi[0] + 1);
-          if (dim == 3) {
-            for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
-              row(0, j, s, owned_.hi[0] + 1);
-              row(1, j, s, owned_.hi[0]);
-            }
-            row(1, owned_.hi[1] + 1, s, owned_.hi[0]);
-          }
         }
-        // The low faces of slab s in top.
-        if (dim == 1) pass2Row(P[0], 0, owned_.lo[1], owned_.lo[2], s, s);
-        if (dim == 2) row(1, s, owned_.lo[2], owned_.hi[0]);
-        if (dim == 3)
-          for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) row(2, j, s, owned_.hi[0]);
+        slabFaces(s, row);
         if (s == owned_.lo[top]) continue;
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
         auto blend1 = [&](std::int64_t c, const double* R) {
@@ -992,40 +1033,46 @@ void IceSolver::advectFluids() {
         for (const AdvectionScratch::Blend& e : adv_.blends) blend.data()[e.cell] = e.b;
         ghosts_->fill(blend);
         const double* bl = blend.data();
-        for (int d = 0; d < dim; ++d) {
+        // Slab by slab as pass 2 (its isentrope fits' window made again): each cell takes its
+        // faces' terms in the order of a sweep per direction.
+        auto face = [&](int d, int i, int j, int k) {
           const FluxPtrs& Q = P[d];
-          forEach(Q.fb, [&](int i, int j, int k) {
-            const std::int64_t fi = Q.fb.index(i, j, k);
-            const double F = Q.Fm[fi];
-            if (F == 0) return;
-            const std::int64_t cR = sb.index(i, j, k), cL = cR - Q.sd;
-            const std::int64_t D = F > 0 ? cL : cR;
-            const double b = bl[D];
-            if (!(b < 1.0)) return;
-            const int id = d == 0 ? i : (d == 1 ? j : k);
-            const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-            const double lam = Q.sc[D];
-            const FaceValue face(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
-            const FaceState f = faceState(face, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
-            double fl[kNumAcc];
-            double ke1 = 0, keB = 0;
-            for (int q = 0; q < dim; ++q) {
-              const double ub = Q.u[q][D] + b * (f.u[q] - Q.u[q][D]);
-              fl[kMomX + q] = F * (ub - f.u[q]);
-              ke1 += f.u[q] * f.u[q];
-              keB += ub * ub;
-            }
-            const double eb = Q.eL[D] + b * (f.e - Q.eL[D]), vb = Q.vL[D] + b * (f.v - Q.vL[D]);
-            fl[kMass] = 0.0;
-            fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
-            fl[kVolume] = F * (vb - f.v);
-            fl[kEint] = F * (eb - f.e);
-            for (int q = 0; q < kNumAcc; ++q) {
-              if (Q.a[q] == nullptr) continue;
-              const double v = lam * fl[q];
-              if (ownL) Q.a[q][cL] -= v;
-              if (ownR) Q.a[q][cR] += v;
-            }
+          const std::int64_t fi = Q.fb.index(i, j, k);
+          const double F = Q.Fm[fi];
+          if (F == 0) return;
+          const std::int64_t cR = sb.index(i, j, k), cL = cR - Q.sd;
+          const std::int64_t D = F > 0 ? cL : cR;
+          const double b = bl[D];
+          if (!(b < 1.0)) return;
+          const int id = d == 0 ? i : (d == 1 ? j : k);
+          const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
+          const double lam = Q.sc[D];
+          const FaceValue fv(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
+          const FaceState f = faceState(fv, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
+          double fl[kNumAcc];
+          double ke1 = 0, keB = 0;
+          for (int q = 0; q < dim; ++q) {
+            const double ub = Q.u[q][D] + b * (f.u[q] - Q.u[q][D]);
+            fl[kMomX + q] = F * (ub - f.u[q]);
+            ke1 += f.u[q] * f.u[q];
+            keB += ub * ub;
+          }
+          const double eb = Q.eL[D] + b * (f.e - Q.eL[D]), vb = Q.vL[D] + b * (f.v - Q.vL[D]);
+          fl[kMass] = 0.0;
+          fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
+          fl[kVolume] = F * (vb - f.v);
+          fl[kEint] = F * (eb - f.e);
+          for (int q = 0; q < kNumAcc; ++q) {
+            if (Q.a[q] == nullptr) continue;
+            const double v = lam * fl[q];
+            if (ownL) Q.a[q][cL] -= v;
+            if (ownR) Q.a[q][cR] += v;
+          }
+        };
+        for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
+          fitWindow(r, s, s != owned_.lo[top]);
+          slabFaces(s, [&](int d, int j, int k, int ilo, int ihi) {
+            for (int i = ilo; i <= ihi; ++i) face(d, i, j, k);
           });
         }
       }

@@ -45,6 +45,22 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std
   return failures;
 }
 
+std::vector<EquilibriumFailure> EquilibriumPressure::solve(const OwnedCells& cells,
+                                                           const std::vector<const double*>& rho,
+                                                           const std::vector<const double*>& e, double* p,
+                                                           const std::vector<double*>& rhoMicro, int* iters,
+                                                           const std::vector<const double*>* carriedVolume) {
+  held_.clear();
+  cavitated_.clear();
+  std::vector<EquilibriumFailure> failures;
+  for (std::size_t b = 0; b < cells.size(); b += kBlock) {
+    block_.resize(std::min(kBlock, cells.size() - b));
+    cells.fill(b, block_.size(), block_.data());
+    solveBlock(block_, rho, e, p, rhoMicro, iters, carriedVolume, failures);
+  }
+  return failures;
+}
+
 void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
                                      const std::vector<const double*>& e, double* p,
                                      const std::vector<double*>& rhoMicro, int* iters,

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "ice/eos/eos.h"
+#include "ice/state/owned_cells.h"
 
 namespace mpmice::ice {
 
@@ -70,6 +71,11 @@ class EquilibriumPressure {
   /// solved in blocks of kBlock (scratch of the block's size, not the mesh's; each cell's
   /// iteration is its own, so the result does not depend on the blocks).
   std::vector<EquilibriumFailure> solve(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,
+                                        const std::vector<const double*>& e, double* p,
+                                        const std::vector<double*>& rhoMicro, int* iters,
+                                        const std::vector<const double*>* carriedVolume = nullptr);
+  /// The same over the owned cells (their indices made a block at a time: the same blocks).
+  std::vector<EquilibriumFailure> solve(const OwnedCells& cells, const std::vector<const double*>& rho,
                                         const std::vector<const double*>& e, double* p,
                                         const std::vector<double*>& rhoMicro, int* iters,
                                         const std::vector<const double*>* carriedVolume = nullptr);

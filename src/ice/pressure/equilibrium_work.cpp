@@ -52,9 +52,8 @@ std::vector<EquilibriumFailure> IceSolver::equilibrateWithWork(
     std::size_t slot;  // index in ownedCells_ (carried)
   };
   std::vector<Cell> cells;
-  for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-    const std::int64_t c = ownedCells_[a];
-    if (cavCell[static_cast<std::size_t>(c)]) continue;
+  ownedCells_.forEach([&](std::size_t a, std::int64_t c) {
+    if (cavCell[static_cast<std::size_t>(c)]) return;
     int n = 0;
     bool ok = true;
     for (std::size_t r = 0; r < nm && ok; ++r) {
@@ -64,7 +63,7 @@ std::vector<EquilibriumFailure> IceSolver::equilibrateWithWork(
       ++n;
     }
     if (ok && n >= 2) cells.push_back({c, a});
-  }
+  });
   if (cells.empty()) return {};
   std::vector<std::vector<double>> e0(nm, std::vector<double>(cells.size()));
   for (std::size_t r = 0; r < nm; ++r)

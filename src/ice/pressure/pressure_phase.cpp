@@ -30,13 +30,12 @@ void IceSolver::computeEquilibriumPressure() {
   // solid's own, continuously with the mixed cells around it.
   std::vector<double> clip(anyExternal_ ? ownedCells_.size() : 0, 1.0);
   if (anyExternal_) {
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
+    ownedCells_.forEach([&](std::size_t a, std::int64_t c) {
       double vext = 0;
       for (const MaterialState& m : st_.mat)
         if (m.external) vext += m.mass.data()[c] * m.spvol.data()[c];
       if (vext > kMaxSolidFraction * V) clip[a] = kMaxSolidFraction * V / vext;
-    }
+    });
   }
   // Traces (ice.trace_mass_fraction, docs/ice.md "Traces") without an admissible state at their
   // energy (a gas at e <= 0: advection's round-off in masses of 1e-60 kg) take the temperature of
@@ -48,16 +47,15 @@ void IceSolver::computeEquilibriumPressure() {
       if (m.external) continue;
       tc.clear();
       te.clear();
-      for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-        const std::int64_t c = ownedCells_[a];
+      ownedCells_.forEach([&](std::size_t, std::int64_t c) {
         const double mr = m.mass.data()[c];
-        if (!(mr > 0)) continue;
+        if (!(mr > 0)) return;
         // The cell's fluid mass (summed where it is read: the loop changes energies only).
         double mf = 0;
         for (const MaterialState& s : st_.mat)
           if (!s.external) mf += s.mass.data()[c];
         if (mr < Y * mf) tc.push_back(c), te.push_back(m.eint.data()[c]);
-      }
+      });
       tf.resize(tc.size());
       m.eos->pressureFloor(tc.size(), te.data(), tf.data());
       for (std::size_t a = 0; a < tc.size(); ++a) {
@@ -80,10 +78,7 @@ void IceSolver::computeEquilibriumPressure() {
   for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile
     double* th = m.theta.data();
     const double* ms = m.mass.data();
-    for (std::size_t a = 0; a < ownedCells_.size(); ++a) {
-      const std::int64_t c = ownedCells_[a];
-      th[c] = ms[c] / V * (m.external ? clip[a] : 1.0);
-    }
+    ownedCells_.forEach([&](std::size_t a, std::int64_t c) { th[c] = ms[c] / V * (m.external ? clip[a] : 1.0); });
     rho.push_back(th);
     e.push_back(m.eint.data());
     rhoMicro.push_back(m.spvol.data());
@@ -95,7 +90,7 @@ void IceSolver::computeEquilibriumPressure() {
   if (equilibriumWork_ && nm > 1)
     for (const MaterialState& m : st_.mat) {
       carriedCopy.emplace_back(ownedCells_.size());
-      for (std::size_t a = 0; a < ownedCells_.size(); ++a) carriedCopy.back()[a] = m.spvol.data()[ownedCells_[a]];
+      ownedCells_.forEach([&](std::size_t a, std::int64_t c) { carriedCopy.back()[a] = m.spvol.data()[c]; });
     }
   auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data(), &carried);
   reportEquilibriumFailures(failures);
@@ -171,6 +166,7 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   ra.resize(chunk);
   ea.resize(chunk);
   c2.resize(chunk);
+  eqCells_.resize(chunk);
   for (MaterialState& m : st_.mat) {
     double* th = m.theta.data();
     double* sv = m.spvol.data();
@@ -179,7 +175,8 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
     const double* ms = m.mass.data();
     for (std::size_t a0 = 0; a0 < n; a0 += chunk) {
       const std::size_t nc = std::min(chunk, n - a0);
-      const std::int64_t* cells = ownedCells_.data() + a0;
+      ownedCells_.fill(a0, nc, eqCells_.data());
+      const std::int64_t* cells = eqCells_.data();
       for (std::size_t a = 0; a < nc; ++a) {
         ra[a] = sv[cells[a]];
         ea[a] = en[cells[a]];

@@ -31,6 +31,7 @@
 #include "ice/solver/energy_audit.h"
 #include "ice/solver/scratch.h"
 #include "ice/state/ice_state.h"
+#include "ice/state/owned_cells.h"
 #include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
@@ -215,7 +216,7 @@ class IceSolver {
   std::unique_ptr<core::GhostExchange> ghosts_;
   IceBoundary bc_;
   IceState st_;
-  std::vector<std::int64_t> ownedCells_;  // linear indices (stored box) of the owned cells
+  OwnedCells ownedCells_;  // linear indices (stored box) of the owned cells, computed where read
   std::unique_ptr<EquilibriumPressure> equil_;
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
@@ -260,6 +261,7 @@ class IceSolver {
   // batches of finishEquilibrium, kEquilibriumChunk owned cells at a time.
   static constexpr std::size_t kEquilibriumChunk = 512;
   std::vector<double> eqRho_, eqE_, eqC2_;
+  std::vector<std::int64_t> eqCells_;  // the chunk's stored indices
   AdvectionScratch adv_;
   // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
   // velocities and the face pressure of a step (none of the phases between them changes mass,

@@ -100,7 +100,7 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);
   equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations, fluid,
                                                  o.trace_mass_fraction);
-  forEach(owned_, [&](int i, int j, int k) { ownedCells_.push_back(stored.index(i, j, k)); });
+  ownedCells_ = OwnedCells(owned_, stored);
 
   // ---- exchange coefficients
   K_.assign(static_cast<std::size_t>(nm * nm), o.exchange_momentum);

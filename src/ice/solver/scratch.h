@@ -81,6 +81,8 @@ struct AdvectionScratch {
   /// The local stiffened-gas fit of the EOS at each stored cell's Lagrangian state of the fluid
   /// being advected (second order only): Gruneisen coefficient (NaN where the fit is not
   /// admissible) and pi, so that the cell's isentrope is e_s(v) = pi v + (e_c - pi v_c) (v_c / v)^Gamma.
+  /// Over two slabs of stored cells (s - 1 and s, consecutive as in the stored box), made as the
+  /// flux passes reach slab s (advection_phase.cpp, fitWindow).
   std::vector<double> isenGamma, isenPi;
   std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection (more than one fluid)
   /// The batch EOS arguments of the isentrope fits, kEosChunk cells at a time.
