@@ -25,24 +25,32 @@ EquilibriumPressure::EquilibriumPressure(std::vector<const Eos*> eos, double tol
   for (const Eos* law : eos_) pCav_.push_back(law->cavitationPressure());
 }
 
+template <class Fill>
+std::vector<EquilibriumFailure> EquilibriumPressure::solveInBlocks(std::size_t n, Fill&& fill,
+                                                                   const std::vector<const double*>& rho,
+                                                                   const std::vector<const double*>& e, double* p,
+                                                                   const std::vector<double*>& rhoMicro, int* iters,
+                                                                   const std::vector<const double*>* carriedVolume) {
+  held_.clear();
+  cavitated_.clear();
+  std::vector<EquilibriumFailure> failures;
+  for (std::size_t b = 0; b < n; b += kBlock) {
+    block_.resize(std::min(kBlock, n - b));
+    fill(b, block_.size(), block_.data());
+    solveBlock(block_, rho, e, p, rhoMicro, iters, carriedVolume, failures);
+  }
+  return failures;
+}
+
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const std::vector<std::int64_t>& cells,
                                                            const std::vector<const double*>& rho,
                                                            const std::vector<const double*>& e, double* p,
                                                            const std::vector<double*>& rhoMicro, int* iters,
                                                            const std::vector<const double*>* carriedVolume) {
-  held_.clear();
-  cavitated_.clear();
-  std::vector<EquilibriumFailure> failures;
-  if (cells.size() <= kBlock) {
-    solveBlock(cells, rho, e, p, rhoMicro, iters, carriedVolume, failures);
-    return failures;
-  }
-  for (std::size_t b = 0; b < cells.size(); b += kBlock) {
-    const auto first = cells.begin() + static_cast<std::ptrdiff_t>(b);
-    block_.assign(first, first + static_cast<std::ptrdiff_t>(std::min(kBlock, cells.size() - b)));
-    solveBlock(block_, rho, e, p, rhoMicro, iters, carriedVolume, failures);
-  }
-  return failures;
+  auto fill = [&](std::size_t first, std::size_t count, std::int64_t* out) {
+    std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(first), count, out);
+  };
+  return solveInBlocks(cells.size(), fill, rho, e, p, rhoMicro, iters, carriedVolume);
 }
 
 std::vector<EquilibriumFailure> EquilibriumPressure::solve(const OwnedCells& cells,
@@ -50,15 +58,8 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solve(const OwnedCells& cel
                                                            const std::vector<const double*>& e, double* p,
                                                            const std::vector<double*>& rhoMicro, int* iters,
                                                            const std::vector<const double*>* carriedVolume) {
-  held_.clear();
-  cavitated_.clear();
-  std::vector<EquilibriumFailure> failures;
-  for (std::size_t b = 0; b < cells.size(); b += kBlock) {
-    block_.resize(std::min(kBlock, cells.size() - b));
-    cells.fill(b, block_.size(), block_.data());
-    solveBlock(block_, rho, e, p, rhoMicro, iters, carriedVolume, failures);
-  }
-  return failures;
+  auto fill = [&](std::size_t first, std::size_t count, std::int64_t* out) { cells.fill(first, count, out); };
+  return solveInBlocks(cells.size(), fill, rho, e, p, rhoMicro, iters, carriedVolume);
 }
 
 void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, const std::vector<const double*>& rho,

@@ -96,6 +96,12 @@ class EquilibriumPressure {
                   const std::vector<const double*>& e, double* p, const std::vector<double*>& rhoMicro,
                   int* iters, const std::vector<const double*>* carriedVolume,
                   std::vector<EquilibriumFailure>& failures);
+  /// Both solve()s: n cells in blocks of kBlock, fill(first, count, out) writing a block's indices.
+  template <class Fill>
+  std::vector<EquilibriumFailure> solveInBlocks(std::size_t n, Fill&& fill, const std::vector<const double*>& rho,
+                                                const std::vector<const double*>& e, double* p,
+                                                const std::vector<double*>& rhoMicro, int* iters,
+                                                const std::vector<const double*>* carriedVolume);
   std::vector<const Eos*> eos_;
   double tol_;
   int maxIt_;
