@@ -67,6 +67,12 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   double acoustic = 0;
   std::int64_t acousticCell = -1;
   const bool acousticBoundOn = !semiImplicit_ && cfl_ > kMaxAcousticCourant;  // it cannot bind otherwise
+  // Semi-implicit with two or more fluids, the run's first step (no step bound before it) without
+  // time.dt_initial: the explicit pressure's bound, max over cells of sum_d (|u_d| + c) / dx_d
+  // (kSemiImplicitStepGrowth).
+  const bool startBoundOn = stepRamp_ && !(lastBound_ > 0) && !(dtInitial_ > 0);
+  double startRate = 0;
+  std::int64_t startCell = -1;
   const int nm = numMaterials();
   const core::Box& sb = st_.press.box();
   std::int64_t rateCell = -1;
@@ -134,6 +140,14 @@ double IceSolver::stableTimeStep(StepBound* where) const {
           if (z > 0) umax[d] = std::max(umax[d], std::abs(press[n] - press[c]) / z);
         }
     }
+    if (startBoundOn) {
+      double e = 0;
+      for (int d = 0; d < nd; ++d) e += (umax[d] + cs) / mesh_.dx(d);
+      if (e > startRate) {
+        startRate = e;
+        startCell = c;
+      }
+    }
     double s = 0;
     for (int d = 0; d < nd; ++d)
       s += (semiImplicit_ ? std::max(umax[d], soundFraction_ * cs) : umax[d] + cs) / mesh_.dx(d);
@@ -191,6 +205,25 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       dt = kMaxAcousticCourant / acoustic;
       acousticBound = true;
     }
+  }
+  // The semi-implicit step with two or more fluids starts from the explicit one (or time.dt_initial)
+  // and grows by at most kSemiImplicitStepGrowth a step (ice_constants.h). time.dt_initial bounds
+  // the run's first step in every setting.
+  bool startBound = false, growthBound = false, initialBound = false;
+  if (!(lastBound_ > 0) && dtInitial_ > 0 && dtInitial_ < dt) {
+    dt = dtInitial_;
+    initialBound = true;
+  }
+  const double localStart = startRate;
+  if (startBoundOn) {
+    startRate = comm_.max(startRate);
+    if (startRate > 0 && std::min(cfl_, kMaxAcousticCourant) / startRate < dt) {
+      dt = std::min(cfl_, kMaxAcousticCourant) / startRate;
+      startBound = true;
+    }
+  } else if (stepRamp_ && lastBound_ > 0 && kSemiImplicitStepGrowth * lastBound_ < dt) {
+    dt = kSemiImplicitStepGrowth * lastBound_;
+    growthBound = true;
   }
   // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
   // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
@@ -252,6 +285,16 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       where->cell = rCell;
       where->riemann = true;
       where->value = rRate;
+    } else if (initialBound && dt < dtMax_) {
+      where->limit = "time.dt_initial (the run's first step)";  // no cell
+    } else if (startBound && dt < dtMax_) {
+      where->limit = "the ICE semi-implicit step's start, the explicit bound min(cfl, 0.7) / sum_d (|u_d| + c) / dx_d";
+      where->here = localStart == startRate;
+      where->cell = startCell;
+      where->value = startRate;
+    } else if (growthBound && dt < dtMax_) {
+      static_assert(kSemiImplicitStepGrowth == 1.1, "the message below quotes it");
+      where->limit = "the ICE semi-implicit step's growth (at most 1.1 times the step before's bound)";  // no cell
     } else if (acousticBound && dt < dtMax_) {
       static_assert(kMaxAcousticCourant == 0.7, "the message below quotes it");
       where->limit = "the ICE explicit acoustic bound 0.7 / (c sum_d 1 / dx_d) (time.cfl above 0.7)";
@@ -269,6 +312,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
       where->limit = "time.dt_max";  // no cell
     }
   }
+  bound_ = dt;
   return dt;
 }
 
@@ -342,6 +386,7 @@ void IceSolver::beginStep(double dt) {
     throw std::runtime_error("ice: time step " + std::to_string(dt) + " at t = " + std::to_string(t_) +
                              " is not positive and finite");
   dt_ = dt;
+  lastBound_ = bound_;
 }
 
 void IceSolver::setExternalMaterialState(int material, std::span<const double> mass, std::span<const double> velocity,

@@ -221,6 +221,13 @@ class IceSolver {
   std::vector<double> K_, H_;             // exchange coefficients (n x n)
   bool anyK_ = false, anyH_ = false, anyExternal_ = false, anyViscous_ = false, anyConduction_ = false;
   bool secondOrder_ = true, semiImplicit_ = false;
+  // The semi-implicit step's bound (stableTimeStep's last value, mutable: the coupler asks for it)
+  // and the bound of the step taken last (beginStep; 0 before the first): the next step is at most
+  // kSemiImplicitStepGrowth times it. Checkpointed with the clock.
+  mutable double bound_ = 0;
+  double lastBound_ = 0;
+  bool stepRamp_ = false;  // semi-implicit with two or more fluids (kSemiImplicitStepGrowth)
+  double dtInitial_ = 0;   // time.dt_initial: the first step's bound (0: none)
   double soundFraction_ = 0.1;  // ice.semi_implicit_sound_fraction: the semi-implicit step's speed floor / c
   bool equilibriumWork_ = false;  // ice.equilibrium: with_work
   enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;

@@ -55,7 +55,8 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
   data.put(prefix + ".iters", std::vector<double>(st_.iters.begin(), st_.iters.end()));  // counts, as doubles
   data.put(prefix + ".clock", std::vector<double>{t_, static_cast<double>(nsteps_), dt_, collapse_.first(),
                                                   static_cast<double>(fallbacks_), static_cast<double>(linIters_),
-                                                  static_cast<double>(linItersTotal_), audit_.created, audit_.energy});
+                                                  static_cast<double>(linItersTotal_), audit_.created, audit_.energy,
+                                                  lastBound_});
   // The pressure solver's multigrid set-up (its matrix and reuse counters): a resumed run rebuilds
   // the hierarchy the interrupted one was using, so it continues bit for bit.
   if (semi_.hypre)
@@ -84,9 +85,11 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
                                 std::to_string(it.size()) + " values, expected " + std::to_string(st_.iters.size()));
   std::transform(it.begin(), it.end(), st_.iters.begin(), [](double x) { return static_cast<int>(x); });
   const auto& c = data.get(prefix + ".clock");
-  if (c.size() != 7 && c.size() != 9)  // 7: written before the energy audit (its sums start at 0)
+  // 7: written before the energy audit (its sums start at 0); 9: before the semi-implicit step's
+  // growth bound (the resumed run starts it again from the explicit step).
+  if (c.size() != 7 && c.size() != 9 && c.size() != 10)
     throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".clock' has " +
-                                std::to_string(c.size()) + " values, expected 9");
+                                std::to_string(c.size()) + " values, expected 10");
   t_ = c[0];
   nsteps_ = static_cast<long>(c[1]);
   dt_ = c[2];
@@ -94,7 +97,8 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
   fallbacks_ = static_cast<long>(c[4]);
   linIters_ = static_cast<int>(c[5]);
   linItersTotal_ = static_cast<long>(c[6]);
-  if (c.size() == 9) audit_.created = c[7], audit_.energy = c[8];
+  if (c.size() >= 9) audit_.created = c[7], audit_.energy = c[8];
+  lastBound_ = c.size() >= 10 ? c[9] : 0.0;
   const bool structured = linearSolver_ == LinearSolver::PfmgPcg || linearSolver_ == LinearSolver::SmgPcg;
   if (semiImplicit_ && structured && data.has(prefix + ".pressure_solver_setup"))
     structSolver().restoreSetupState(data.get(prefix + ".pressure_solver_setup"));

@@ -1,5 +1,6 @@
 // IceSolver::initialize: materials, options, the initial state from the scene's regions, boundary
 // states and energy sources. Every bad input is a std::invalid_argument naming the scene key.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -32,6 +33,9 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
                                 "'; valid: explicit, semi_implicit");
   semiImplicit_ = o.pressure_solver == "semi_implicit";
   soundFraction_ = o.semi_implicit_sound_fraction;
+  stepRamp_ = semiImplicit_ && std::count_if(scene.materials.begin(), scene.materials.end(), [](const core::MaterialSpec& m) {
+                return m.kind == core::MaterialKind::Fluid;
+              }) >= 2;
   if (o.equilibrium != "fixed_energy" && o.equilibrium != "with_work")
     throw std::invalid_argument("ice.equilibrium: unknown value '" + o.equilibrium + "'; valid: fixed_energy, with_work");
   equilibriumWork_ = o.equilibrium == "with_work";
@@ -58,6 +62,7 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   tEnd_ = scene.time.end;
   dtMax_ = scene.time.dt_max;
   dtMin_ = scene.time.dt_min;
+  dtInitial_ = scene.time.dt_initial;
   collapse_ = core::StepCollapse(scene.time.dt_collapse_fraction);
   gravity_ = scene.gravity;
   anyGravity_ = gravity_[0] != 0 || gravity_[1] != 0 || gravity_[2] != 0;

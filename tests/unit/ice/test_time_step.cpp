@@ -197,3 +197,47 @@ TEST(IceTimeStep, ExplicitAcousticCourantBoundsASlowFlowAboveCfl07) {
   si.computeEquilibriumPressure();
   EXPECT_NEAR(si.stableTimeStep(), 1.0 / (2 * 0.1 * c / 0.1), 1e-12 / rate);  // its speed floor 0.1 c
 }
+
+// The semi-implicit step with two or more fluids (ice_constants.h, kSemiImplicitStepGrowth): the
+// run's first step is the explicit one, cfl / sum_d ((|u_d| + c) / dx_d), and each later bound at
+// most 1.1 times the one before, up to the semi-implicit bound (here its sound-speed floor, ten
+// times the explicit step). One fluid keeps the semi-implicit bound from the first step (above).
+// time.dt_initial bounds the first step in every setting, and the ramp grows from it.
+TEST(IceTimeStep, SemiImplicitWithTwoFluidsStartsFromTheExplicitStepAndGrows) {
+  core::Scene s = checkerboardBox(0.0);
+  s.ice.pressure_solver = "semi_implicit";
+  s.materials = {test::idealGas("gas"), test::idealGas("other")};
+  s.geometry = {test::region("mix", test::box({0, 0, 0}, {1, 1, 1}), {{"gas", 0.5}, {"other", 0.5}}, 1e5, 1.0)};
+  ice::IceSolver sol(s, test::comm());
+  sol.computeEquilibriumPressure();
+  const auto& m = sol.state().mat[0];
+  const double c = std::sqrt(m.spvol(3, 3, 0) / m.kappa(3, 3, 0));
+  const double explicitStep = 0.4 / (2 * c / 0.1), semiStep = 0.4 / (2 * 0.1 * c / 0.1);  // dx = dy = 0.1
+  double dt = sol.stableTimeStep();
+  EXPECT_NEAR(dt, explicitStep, 1e-12 * explicitStep);
+  EXPECT_NE(sol.stableTimeStepLimit().find("semi-implicit step's start"), std::string::npos) << sol.stableTimeStepLimit();
+  int n = 0;
+  for (; n < 100 && dt < semiStep; ++n) {
+    sol.beginStep(dt);
+    const double next = sol.stableTimeStep();
+    EXPECT_NEAR(next, std::min(ice::kSemiImplicitStepGrowth * dt, semiStep), 1e-12 * semiStep) << "bound " << n + 1;
+    if (next < semiStep) {
+      EXPECT_NE(sol.stableTimeStepLimit().find("semi-implicit step's growth"), std::string::npos);
+    }
+    dt = next;
+  }
+  EXPECT_EQ(n, static_cast<int>(std::ceil(std::log(10.0) / std::log(ice::kSemiImplicitStepGrowth))));
+  // time.dt_initial: the first step, explicit or semi-implicit; the ramp grows from it.
+  for (const char* pressure : {"explicit", "semi_implicit"}) {
+    core::Scene d = s;
+    d.ice.pressure_solver = pressure;
+    d.time.dt_initial = 1e-7;
+    ice::IceSolver first(d, test::comm());
+    first.computeEquilibriumPressure();
+    EXPECT_DOUBLE_EQ(first.stableTimeStep(), 1e-7) << pressure;
+    EXPECT_NE(first.stableTimeStepLimit().find("time.dt_initial"), std::string::npos) << first.stableTimeStepLimit();
+    first.beginStep(1e-7);
+    EXPECT_NEAR(first.stableTimeStep(), std::string(pressure) == "explicit" ? explicitStep : 1.1e-7, 1e-12 * semiStep)
+        << pressure;
+  }
+}

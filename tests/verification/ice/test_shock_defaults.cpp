@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "ice_shock_cases.h"
@@ -107,4 +108,31 @@ TEST(IceShockDefaults, WaterAirLagrangianSharesCreateNoEnergy) {
     std::printf("  %d cells: energy created by the fallbacks %.2e of the total\n", n, r.createdShare);
     EXPECT_LT(r.createdShare, 1e-15) << n;
   }
+}
+
+// The semi-implicit pressure with two fluids starts from the explicit step and grows 1.1 times a
+// step (ice_constants.h, kSemiImplicitStepGrowth). Water against air at the real density ratio:
+// first order then stays within 2 % behind the air shock at every resolution (it was +5.00 % in
+// pressure at 400 cells, +3.96 % at 800) and the fallbacks create no energy (3.7e-4 of the total at
+// 400 cells before); van Leer and superbee, which stopped at every resolution (air below 0 K at
+// the contact, steps 17-45), complete and create no energy. Their air overshoots 2-6 % at 200 and
+// 400 cells (docs/ice.md "The semi-implicit step's start"): completion is asserted, not the bound.
+TEST(IceShockDefaults, SemiImplicitWaterAirStartsFromTheExplicitStep) {
+  const test::ShockCase c = test::waterAirRealDensity();
+  for (const char* setting : {"first_order", "van_leer", "superbee"})
+    for (const int n : kCells) {
+      test::TubeOptions o;
+      o.pressure = "semi_implicit";
+      if (std::string(setting) == "first_order") o.advection = "first_order";
+      else o.limiter = setting;
+      const test::ShockResult r = test::runShockCase(c, n, o);
+      ASSERT_TRUE(r.completed) << setting << " " << n << ": " << r.error;
+      std::printf("  %s %d cells: %ld steps, overshoot air rho %+.2f %%, p %+.2f %%; energy created %.2e\n", setting, n,
+                  r.steps, r.overRhoOwn, r.overP, r.createdShare);
+      EXPECT_LT(r.createdShare, 1e-15) << setting << " " << n;
+      if (std::string(setting) == "first_order") {
+        EXPECT_LT(r.overRhoOwn, kOvershoot) << n;
+        EXPECT_LT(r.overP, kOvershoot) << n;
+      }
+    }
 }
