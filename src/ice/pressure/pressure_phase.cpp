@@ -10,6 +10,7 @@
 
 #include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
+#include "ice/solver/health_check.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
 
@@ -203,6 +204,20 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   // (computeSourcesAndLagrangian), so the pressure stays at the cut-off while the cavity opens or closes.
   for (const auto& [r, c] : cavitated)
     st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
+  // The health check's sound speed (soundSpeedSquared) where kappa is made: its array holds the
+  // Lagrangian specific volume from the Lagrangian phase on (MaterialState::lagSpvol).
+  soundBad_.clear();
+  for (int r = 0; r < nm; ++r) {
+    const MaterialState& m = st_.mat[r];
+    if (m.external) continue;
+    const double *th = m.theta.data(), *sv = m.spvol.data(), *ka = m.kappa.data(), *ms = m.mass.data();
+    const bool cav = m.eos->cavitates();
+    ownedCells_.forEach([&](std::size_t, std::int64_t c) {
+      if (!(th[c] > kPresentFraction) || !(ms[c] > 0)) return;
+      const double s2 = soundSpeedSquared(sv[c], ka[c], cav);
+      if (!soundSpeedAdmissible(s2)) soundBad_.push_back({r, c, s2});
+    });
+  }
 
   fillMaterialGhosts(false);
   if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_);
