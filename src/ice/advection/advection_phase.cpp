@@ -231,7 +231,6 @@ void IceSolver::advectFluids() {
       for (int d = 0; d < dim; ++d)
         adv_.mat[static_cast<std::size_t>(fluids[q])].massFlux[d] =
             core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
-    adv_.outflowScale = core::Field("outflow_scale", core::Centering::Cell, sb, 1, kGhost);
   }
   // One set of whole-box arrays serves the cell mixtures (computeCellMixes: the stable step to the
   // face pressure) and the advection's conserved amounts and fluid mass: the mixtures are invalid
@@ -306,7 +305,7 @@ void IceSolver::advectFluids() {
     accumulators(m, a);
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     const auto u = core::components(m.vel);
-    const double* vL = m.spvolL.data();
+    const double* vL = m.lagSpvol().data();
     const double* fluidMass = oneFluid ? a[kMass] : adv_.fluidMass.data();  // read before the cell's own write
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
@@ -501,12 +500,15 @@ void IceSolver::advectFluids() {
     // 1 elsewhere. One fluid at a time (the passes below take them one after the other): each
     // owned donor's outflow summed over its faces in the order x low, x high, y low, y high,
     // z low, z high; the ghosts' from their owners.
-    // Computed once per fluid (for the fluid mass below); where it is not 1 (few cells) it is kept
-    // and put back when the fluid is advected.
-    core::Field& outScale = adv_.outflowScale;
+    // Computed once per fluid (for the fluid mass below) over the stored box in the fluid's own
+    // specific volume's array (free from pass 1, its last reader, to the fluid's conserved
+    // amounts: m v; its ghosts are filled again at the next equilibrium, before anything reads
+    // them); where it is not 1 (few cells) it is kept, and put back two slabs at a time
+    // (scaleWindow) when the fluid is advected.
     adv_.capped.resize(static_cast<std::size_t>(nm));
     auto outflowScale = [&](int r) {
       const double* ms = st_.mat[r].mass.data();
+      core::Field& outScale = st_.mat[r].spvol;
       double* sc = outScale.data();
       const AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
       std::fill(sc, sc + npts, 0.0);
@@ -549,11 +551,6 @@ void IceSolver::advectFluids() {
         if (sc[c] != 1.0) capped.push_back({static_cast<std::int64_t>(c), sc[c]});
       }
     };
-    auto restoreOutflowScale = [&](int r) {
-      double* sc = outScale.data();
-      std::fill(sc, sc + npts, 1.0);
-      for (const auto& [c, v] : adv_.capped[static_cast<std::size_t>(r)]) sc[c] = v;
-    };
 
     // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
     // m (e + |u|^2 / 2), m v (in the specific volume, which nothing below reads), m e.
@@ -562,7 +559,7 @@ void IceSolver::advectFluids() {
       MaterialState& m = st_.mat[r];
       double* a[kNumAcc];
       accumulators(m, a);
-      const double *e = m.eint.data(), *v = m.spvolL.data();  // Lagrangian (ice_state.h)
+      const double *e = m.eint.data(), *v = m.lagSpvol().data();  // Lagrangian (ice_state.h)
       const auto u = core::components(m.vel);
       // One cell (T double) or four (T lanes::v4d, the same operations) from c on.
       auto cell = [&]<class T>(std::int64_t c) {
@@ -634,7 +631,7 @@ void IceSolver::advectFluids() {
       const MaterialState& m = st_.mat[r];
       const std::size_t S = static_cast<std::size_t>(slabStored);
       double *g = adv_.isenGamma.data(), *pi = adv_.isenPi.data();
-      const double *v = m.spvolL.data(), *e = m.eint.data();
+      const double *v = m.lagSpvol().data(), *e = m.eint.data();
       const std::int64_t lo = std::int64_t(s - 1 - sb.lo[top]) * slabStored;  // slab s - 1's first stored cell
       if (next) {
         std::copy(g + S, g + 2 * S, g);
@@ -644,6 +641,25 @@ void IceSolver::advectFluids() {
       }
       isentropeFits(*m.eos, S, v + lo + slabStored, e + lo + slabStored, adv_, g + S, pi + S);
       fitOffset = lo;
+    };
+    // The outflow scale of fluid r over the same window of two slabs (its stored cell c at
+    // c - scaleOffset), from its capped cells (the rest 1), as the flux passes reach slab s.
+    std::int64_t scaleOffset = 0;
+    adv_.scaleWindow.resize(static_cast<std::size_t>(2 * slabStored));
+    auto scaleWindow = [&](int r, int s, bool next) {
+      const std::size_t S = static_cast<std::size_t>(slabStored);
+      double* w = adv_.scaleWindow.data();
+      const std::int64_t lo = std::int64_t(s - 1 - sb.lo[top]) * slabStored;  // slab s - 1's first stored cell
+      const auto& capped = adv_.capped[static_cast<std::size_t>(r)];  // in increasing cell order
+      auto slabFrom = [&](double* to, std::int64_t c0) {  // the stored slab from cell c0
+        std::fill(to, to + S, 1.0);
+        auto q = std::lower_bound(capped.begin(), capped.end(), c0, [](const auto& e, std::int64_t c) { return e.first < c; });
+        for (; q != capped.end() && q->first < c0 + slabStored; ++q) to[q->first - c0] = q->second;
+      };
+      if (next) std::copy(w + S, w + 2 * S, w);
+      else slabFrom(w, lo);
+      slabFrom(w + S, lo + slabStored);
+      scaleOffset = lo;
     };
 
     // The face values of one fluid at one face: velocity (the mesh's dimension of components),
@@ -680,7 +696,7 @@ void IceSolver::advectFluids() {
       core::Box fb;  // the faces normal to the direction that bound the owned cells
       std::int64_t sd;
       double dx;
-      const double *Fm, *sc, *uf;                    // mass flux, outflow scale, face velocity
+      const double *Fm, *sc, *uf;                    // mass flux, outflow scale (scaleWindow), face velocity
       const double *u[3], *eL, *vL, *isG, *isP, *th;  // the face values' sources
       double* a[kNumAcc];
     };
@@ -688,9 +704,9 @@ void IceSolver::advectFluids() {
       MaterialState& m = st_.mat[r];
       AdvectionScratch::Material& am = adv_.mat[static_cast<std::size_t>(r)];
       const auto uL = core::components(m.vel);  // the Lagrangian values (ice_state.h)
-      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), outScale.data(),
+      FluxPtrs P{owned_.faces(d), strides[d], mesh_.dx(d), am.massFlux[d].data(), adv_.scaleWindow.data(),
                  m.velFace[d].data(), {uL[0], uL[1], uL[2]}, m.eint.data(),
-                 m.spvolL.data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
+                 m.lagSpvol().data(), Second ? adv_.isenGamma.data() : nullptr, Second ? adv_.isenPi.data() : nullptr,
                  m.theta.data(), {}};
       accumulators(m, P.a);
       return P;
@@ -765,7 +781,7 @@ void IceSolver::advectFluids() {
           const v4m nz = F != 0;
           if (!lanes::any(nz)) continue;
           const std::int64_t cL = cR - P.sd;
-          const v4d lam = sel(F > 0, load(P.sc + cL), load(P.sc + cR));
+          const v4d lam = sel(F > 0, load(P.sc + (cL - scaleOffset)), load(P.sc + (cR - scaleOffset)));
           const FaceValueLanes face(rc, load(P.uf + fi), cL, P.sd, dt, P.dx);
           v4d fu[DIM];
           for (int q = 0; q < DIM; ++q) fu[q] = face(P.u[q]);
@@ -837,7 +853,7 @@ void IceSolver::advectFluids() {
         const std::int64_t cL = cR - P.sd;
         const int id = d == 0 ? i : (d == 1 ? j : k);  // the face's index in d
         const bool ownL = Inner || id > lo, ownR = Inner || id <= hi;
-        const double lam = F > 0 ? P.sc[cL] : P.sc[cR];
+        const double lam = F > 0 ? P.sc[cL - scaleOffset] : P.sc[cR - scaleOffset];
         const FaceValue face(rc, P.uf[fi], cL, P.sd, dt, P.dx);
         const FaceState f = faceStateDim.template operator()<DIM>(face, cL, cR, P.u, P.vL, P.eL, P.th, P.isG, P.isP);
         auto apply = [&](double* acc, double flux) {
@@ -902,7 +918,7 @@ void IceSolver::advectFluids() {
         // passes below fill it).
         std::copy(m.mass.data(), m.mass.data() + npts, adv_.eint.begin());
         double* ma = adv_.eint.data();
-        const double* sc = outScale.data();
+        const double* sc = m.spvol.data();  // the outflow scale (outflowScale)
         for (int d = 0; d < dim; ++d) {
           const core::Box fb = owned_.faces(d);
           const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
@@ -948,13 +964,12 @@ void IceSolver::advectFluids() {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
       if (oneFluid) outflowScale(r);
-      else restoreOutflowScale(r);
       fitIsentropes(r);
       conserved(r);
       FluxPtrs P[3];
       for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
       const double* ms = m.mass.data();
-      const double *eL = m.eint.data(), *vL = m.spvolL.data();
+      const double *eL = m.eint.data(), *vL = m.lagSpvol().data();
       const bool cold = m.eos->coldEnergy(1.0) != 0.0;
       adv_.blends.clear();
       // The faces of slab s (lo[top] .. hi[top] + 1) in the flux passes' order: with s <= hi[top]
@@ -981,6 +996,7 @@ void IceSolver::advectFluids() {
       auto row = [&](int d, int j, int k, int ilo, int ihi) { pass2Row(P[d], d, j, k, ilo, ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
         fitWindow(r, s, s != owned_.lo[top]);
+        scaleWindow(r, s, s != owned_.lo[top]);
         if (s <= owned_.hi[top]) {
           auto init = [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
             R[kRemMass * rs] = ms[c];
@@ -1046,7 +1062,7 @@ void IceSolver::advectFluids() {
           if (!(b < 1.0)) return;
           const int id = d == 0 ? i : (d == 1 ? j : k);
           const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
-          const double lam = Q.sc[D];
+          const double lam = Q.sc[D - scaleOffset];
           const FaceValue fv(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
           const FaceState f = faceState(fv, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
           double fl[kNumAcc];
@@ -1071,6 +1087,7 @@ void IceSolver::advectFluids() {
         };
         for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
           fitWindow(r, s, s != owned_.lo[top]);
+          scaleWindow(r, s, s != owned_.lo[top]);
           slabFaces(s, [&](int d, int j, int k, int ilo, int ihi) {
             for (int i = ilo; i <= ihi; ++i) face(d, i, j, k);
           });

@@ -43,7 +43,7 @@ void IceSolver::exchange() {
   for (int r = 0; r < nm; ++r) {
     MaterialState& m = st_.mat[r];
     const auto uL = core::components(m.lagVel());
-    ptr[r] = {m.mass.data(), m.theta.data(), m.spvolL.data(), {uL[0], uL[1], uL[2]}, m.lagEint().data(),
+    ptr[r] = {m.mass.data(), m.theta.data(), m.lagSpvol().data(), {uL[0], uL[1], uL[2]}, m.lagEint().data(),
               {m.dMom.data(0), m.dMom.data(1), m.dMom.data(2)}, m.dEnergy.data(),
               m.eos->cv(), m.external};
   }

@@ -50,7 +50,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       thetaS += m.theta.data()[c];
       const double C = m.mass.data()[c] * m.eos->cv();
       Cs += C;
-      CsdTs += C * (m.eos->temperature(1.0 / m.spvolL.data()[c], m.eintL.data()[c]) -
+      CsdTs += C * (m.eos->temperature(1.0 / m.lagSpvol().data()[c], m.eintL.data()[c]) -
                     m.eos->temperature(1.0 / m.spvol.data()[c], m.eint.data()[c]));
     }
     // A cavitated liquid (kbar = inf) takes the cell's whole volume change: the solids carry none.
@@ -61,7 +61,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       const double mass = m.mass.data()[c];
       if (m.external || !(mass > 0)) continue;
       double& e = m.eint.data()[c];  // a fluid's Lagrangian energy (its start-of-step one: eintStart)
-      const double dTown = m.eos->temperature(1.0 / m.spvolL.data()[c], e) -
+      const double dTown = m.eos->temperature(1.0 / m.lagSpvol().data()[c], e) -
                            m.eos->temperature(1.0 / m.spvol.data()[c], m.eintStart.data()[c]);
       const double kf = m.kappa.data()[c];
       const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
@@ -76,7 +76,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       // e - e_cold is not taken (the Lagrangian energy fix's guard): the rule moves temperature
       // changes, and a trace the ratchet above has already cooled towards 0 K would be taken below
       // it by a solid's small cooling (a buffer gas in a filled lattice's polymer, docs/slides.md).
-      const double ec = m.eos->coldEnergy(1.0) != 0.0 ? m.eos->coldEnergy(1.0 / m.spvolL.data()[c]) : 0.0;
+      const double ec = m.eos->coldEnergy(1.0) != 0.0 ? m.eos->coldEnergy(1.0 / m.lagSpvol().data()[c]) : 0.0;
       if (e - ec > 0 && e + de - ec < kMinEnergyShare * (e - ec)) continue;
       e += de;
       Q += mass * de;

@@ -10,6 +10,7 @@
 
 #include "ice/face/solid_faces.h"
 #include "ice/ice_constants.h"
+#include "ice/solver/health_check.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
 
@@ -167,7 +168,13 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   ea.resize(chunk);
   c2.resize(chunk);
   eqCells_.resize(chunk);
-  for (MaterialState& m : st_.mat) {
+  // The health check's sound speed (soundSpeedSquared) where kappa is made: its array holds the
+  // Lagrangian specific volume from the Lagrangian phase on (MaterialState::lagSpvol). The cells
+  // found here are checked again below, with the held and cavitated ones' kappa.
+  soundBad_.clear();
+  for (int r = 0; r < nm; ++r) {
+    MaterialState& m = st_.mat[r];
+    const bool fluid = !m.external, cav = m.eos->cavitates();
     double* th = m.theta.data();
     double* sv = m.spvol.data();
     double* ka = m.kappa.data();
@@ -191,6 +198,8 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
         // An absent material's compressibility is never weighted (theta = 0); at p = 0 (a cavitated
         // liquid's cut-off) a JWL's density is ~1e-300 and 1 / (rho c^2) overflows: 0 * inf was NaN.
         if (!(ms[c] > 0) && !std::isfinite(ka[c])) ka[c] = 0.0;
+        if (fluid && th[c] > kPresentFraction && ms[c] > 0 && !soundSpeedAdmissible(soundSpeedSquared(sv[c], ka[c], cav)))
+          soundBad_.push_back({r, c, 0.0});
       }
     }
   }
@@ -203,6 +212,16 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   // (computeSourcesAndLagrangian), so the pressure stays at the cut-off while the cavity opens or closes.
   for (const auto& [r, c] : cavitated)
     st_.mat[static_cast<std::size_t>(r)].kappa.data()[c] = std::numeric_limits<double>::infinity();
+  // The sound speeds found above and the cavitated liquids' (held traces: kappa = 0, admissible).
+  for (const auto& [r, c] : cavitated)
+    if (!st_.mat[static_cast<std::size_t>(r)].external) soundBad_.push_back({r, c, 0.0});
+  std::erase_if(soundBad_, [&](SoundSpeedViolation& b) {
+    const MaterialState& m = st_.mat[static_cast<std::size_t>(b.material)];
+    const std::int64_t c = b.cell;
+    if (!(m.theta.data()[c] > kPresentFraction) || !(m.mass.data()[c] > 0)) return true;
+    b.c2 = soundSpeedSquared(m.spvol.data()[c], m.kappa.data()[c], m.eos->cavitates());
+    return soundSpeedAdmissible(b.c2);
+  });
 
   fillMaterialGhosts(false);
   if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -40,6 +39,7 @@ std::string cellViolationOnly(const IceSolver& s, int i, int j, int k, std::int6
   for (const MaterialState& m : st.mat) {
     const double th = m.theta.data()[c];
     const std::string who = (m.external ? "external material '" : "fluid '") + m.name + "'";
+    const int r = static_cast<int>(&m - st.mat.data());
     if (!std::isfinite(th) || th < -kFractionSumTolerance) return bad("volume fraction", who, th, "finite, >= 0");
     sum += th;
     if (m.external) continue;
@@ -51,15 +51,13 @@ std::string cellViolationOnly(const IceSolver& s, int i, int j, int k, std::int6
     if (!std::isfinite(e)) return bad("specific internal energy [J/kg]", who, e, "finite");
     if (!std::isfinite(v) || (mass > 0 && !(v > 0)))
       return bad("specific volume [m^3/kg]", who, v, "finite, > 0 where there is mass");
+    // The sound speed where the fluid was present at the step's equilibrium (recorded there).
+    for (const IceSolver::SoundSpeedViolation& b : s.soundSpeedViolations())
+      if (b.material == r && b.cell == c)
+        return bad("sound speed [m/s]", who, b.c2 > 0 ? std::sqrt(b.c2) : b.c2, "in (0, speed of light)");
     if (!(th > kPresentFraction) || !(mass > 0)) continue;  // ranges only where the fluid is present
     const double T = m.eos->temperature(1.0 / v, e);
     if (!(T > 0 && T <= core::kMaxTemperature)) return bad("temperature [K]", who, T, "in (0, 1e9]");
-    // kappa = 0: a trace held at its carried volume this step (incompressible, docs/ice.md "Traces").
-    // kappa = inf: a cavitated liquid (zero sound speed at its cut-off, docs/ice.md "Cavitation").
-    const double ka = m.kappa.data()[c];
-    const double c2 = ka == 0.0 || (std::isinf(ka) && ka > 0 && m.eos->cavitates()) ? 1.0 : v / ka;
-    if (!(c2 > 0 && c2 < core::kMaxSoundSpeed * core::kMaxSoundSpeed))
-      return bad("sound speed [m/s]", who, c2 > 0 ? std::sqrt(c2) : c2, "in (0, speed of light)");
   }
   if (!(std::abs(sum - 1.0) <= kFractionSumTolerance)) {
     std::ostringstream exp;
@@ -76,7 +74,6 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
   const double* p = st.press.data() + c0;
   for (int a = 0; a < n; ++a) ok &= std::isfinite(p[a]);
   sum.assign(static_cast<std::size_t>(n), 0.0);
-  constexpr double c2max = core::kMaxSoundSpeed * core::kMaxSoundSpeed;
   for (const MaterialState& m : st.mat) {
     const double* th = m.theta.data() + c0;
     for (int a = 0; a < n; ++a) {
@@ -84,17 +81,15 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
       sum[static_cast<std::size_t>(a)] += th[a];
     }
     if (m.external) continue;
-    const double *ms = m.mass.data() + c0, *en = m.eint.data() + c0, *sv = m.spvol.data() + c0,
-                 *ka = m.kappa.data() + c0;
+    const double *ms = m.mass.data() + c0, *en = m.eint.data() + c0, *sv = m.spvol.data() + c0;
     for (int d = 0; d < dim; ++d) {
       const double* u = m.vel.data(d) + c0;
       for (int a = 0; a < n; ++a) ok &= std::isfinite(u[a]);
     }
     const double cvTmax = m.eos->cv() * core::kMaxTemperature;
-    // T = (e - e_cold(rho)) / cv, c^2 = v / kappa. Only stiffened gas has a cold energy (eos.h):
-    // the others skip its virtual call per cell.
+    // T = (e - e_cold(rho)) / cv. Only stiffened gas has a cold energy (eos.h): the others skip
+    // its virtual call per cell.
     const bool cold = m.eos->coldEnergy(1.0) != 0.0;
-    const double kaCav = m.eos->cavitates() ? std::numeric_limits<double>::infinity() : 0.0;  // cavitated: kappa = inf
     // Cold: the EOS has a cold energy (a virtual call per cell); without it (no call) the loop vectorises.
     auto cells = [&]<bool Cold>() {
       int good = 1;
@@ -104,7 +99,7 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
         double eT = e;
         if constexpr (Cold) eT = e - m.eos->coldEnergy(1.0 / v);
         const bool present = (th[a] > kPresentFraction) & (mass > 0);
-        good &= (!present) | ((eT > 0) & (eT <= cvTmax) & ((ka[a] == 0.0) | (ka[a] == kaCav) | ((ka[a] > 0) & (v < c2max * ka[a]))));
+        good &= (!present) | ((eT > 0) & (eT <= cvTmax));
       }
       ok &= good != 0;
     };
@@ -219,7 +214,7 @@ std::string findViolation(const IceSolver& s) {
   const core::Box& sb = st.press.box();
   const int dim = s.mesh().dim();
   const core::Box& ob = s.ownedBox();
-  bool ok = true;
+  bool ok = s.soundSpeedViolations().empty();
   std::vector<double> sum;
   for (int k = ob.lo[2]; k <= ob.hi[2]; ++k)
     for (int j = ob.lo[1]; j <= ob.hi[1]; ++j) ok &= rowOk(st, sb.index(ob.lo[0], j, k), ob.length(0), dim, sum);

@@ -38,7 +38,7 @@ void IceSolver::fillMaterialGhosts(bool lagrangian) {
     MaterialState& m = st_.mat[r];
     if (lagrangian) {
       fs.insert(fs.end(), {{&m.lagVel(), FieldKind::Velocity}, {&m.lagEint(), FieldKind::Energy},
-                           {&m.spvolL, FieldKind::SpecificVolume}});
+                           {&m.lagSpvol(), FieldKind::SpecificVolume}});
       mats.insert(mats.end(), {r, r, r});
     } else {
       fs.insert(fs.end(), {{&m.mass, FieldKind::Mass}, {&m.vel, FieldKind::Velocity}, {&m.eint, FieldKind::Energy},

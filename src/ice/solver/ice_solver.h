@@ -171,6 +171,16 @@ class IceSolver {
   [[nodiscard]] long positivityBlends() const { return positivityBlends_; }
   /// The energy those fallbacks added (energy_audit.h; the health check reads it).
   [[nodiscard]] const EnergyAudit& energyAudit() const { return audit_; }
+  /// A fluid present in an owned cell whose sound speed at the last equilibrium, c^2 = v / kappa,
+  /// is out of range (health_check.h, soundSpeedSquared); the health check names it. Recorded
+  /// where kappa is made: its array holds the Lagrangian specific volume from the Lagrangian
+  /// phase on (MaterialState::lagSpvol).
+  struct SoundSpeedViolation {
+    int material;
+    std::int64_t cell;  // stored-box index
+    double c2;
+  };
+  [[nodiscard]] const std::vector<SoundSpeedViolation>& soundSpeedViolations() const { return soundBad_; }
 
  private:
   void initialize(const core::Scene& scene, bool coupledStart);
@@ -260,6 +270,7 @@ class IceSolver {
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
   EnergyAudit audit_;
+  std::vector<SoundSpeedViolation> soundBad_;  // soundSpeedViolations(): finishEquilibrium's
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start only)
   SemiImplicitScratch semi_;

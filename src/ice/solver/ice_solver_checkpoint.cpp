@@ -73,7 +73,7 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
     // (3 Dec 2026) holds 3, the ones beyond an exact zero: its first components are taken.
     const bool velocity = name.ends_with(".vel") || name.ends_with(".velL");
     const std::vector<double>& v = data.get(key);
-    if (out.empty()) return;  // a fluid's velL, eintL (ice_state.h): written by older programs, read by none
+    if (out.empty()) return;  // a fluid's velL, eintL, spvolL (ice_state.h): written by older programs, read by none
     if (velocity && f.ncomp() < 3 && v.size() == static_cast<std::size_t>(3 * f.npts()))
       std::copy(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(out.size()), out.begin());
     else

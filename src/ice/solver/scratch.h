@@ -50,7 +50,8 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 /// m v in the state's own fields), the donors' positivity scale, the isentrope fits. The
 /// positivity blend's per-donor sums live for two slabs of cells only (rows in 2D, planes in
 /// 3D: pass 2 sweeps them in order and a slab's sums are complete once the faces above it are
-/// done), its factors only where they are below 1.
+/// done), its factors only where they are below 1; so do the outflow scale (kept where it is not
+/// 1) and the isentrope fits.
 struct AdvectionScratch {
   struct Material {
     std::array<core::Field, 3> massFlux;    // one component per face normal to each direction
@@ -61,10 +62,13 @@ struct AdvectionScratch {
     double b;
   };
   std::vector<Material> mat;
-  core::Field outflowScale;  // scale of each donor's outflow, of the fluid being advected
-  /// Per material, the stored cells whose outflow scale is not 1 and their scale (computed once
-  /// per step for the fluid mass after advection, put back when the fluid is advected).
+  /// Per material, the stored cells whose outflow scale is not 1 and their scale, in increasing
+  /// cell order (computed once per step for the fluid mass after advection, in the fluid's
+  /// specific volume's array, then free: advection_phase.cpp, outflowScale).
   std::vector<std::vector<std::pair<std::int64_t, double>>> capped;
+  /// The outflow scale of the fluid being advected over two slabs of stored cells (s - 1 and s,
+  /// as the isentrope fits below), put back from `capped` as the flux passes reach slab s.
+  std::vector<double> scaleWindow;
   /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
   /// m (e + |u|^2 / 2), m e (before the passes, each fluid's mass after advection, for fluidMass).
   /// These, and fluidMass, are the cell mixtures' arrays, lent to the advection (advectFluids).

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <utility>
 
+#include "ice/exchange/pointwise_exchange.h"  // kMaxMaterials
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
 #include "ice/state/phase_units.h"
@@ -55,7 +56,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     const auto u = core::components(m.vel);
     const auto uL = core::components(m.lagVel());
     ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(), {u[0], u[1], u[2]}, m.eint.data(),
-              {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.spvolL.data(), m.eos->cv(), m.external,
+              {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.lagSpvol().data(), m.eos->cv(), m.external,
               m.external ? m.couplingWork.data() : nullptr, m.external ? m.dEnergy.data() : nullptr, m.eos.get(),
               m.eos->coldEnergy(1.0) != 0.0};
   }
@@ -75,17 +76,22 @@ void IceSolver::computeSourcesAndLagrangian() {
   // the same order).
   auto cell = [&]<int NM>(std::int64_t c, std::int64_t oc, const std::int64_t* fls) {
     const int n = NM > 0 ? NM : nm;
+    // The cell's kappa, read before its Lagrangian volumes are written: without external materials
+    // they are kappa's arrays (MaterialState::lagSpvol).
+    double ka[kMaxMaterials];
+    for (int r = 0; r < n; ++r) ka[r] = ptr[r].ka[c];
     double kbar = 0, thetaCav = 0;
-    for (int r = 0; r < n; ++r) kbar += ptr[r].th[c] * ptr[r].ka[c];
+    for (int r = 0; r < n; ++r) kbar += ptr[r].th[c] * ka[r];
     // A cavitated liquid (kappa = inf, docs/ice.md "Cavitation") makes kbar infinite: the
     // cavitated liquids take the cell's volume change (shared by their volume fractions), the others none.
     const bool cavity = std::isinf(kbar);
     if (cavity)
       for (int r = 0; r < n; ++r)
-        if (std::isinf(ptr[r].ka[c])) thetaCav += ptr[r].th[c];
-    auto volumeShare = [&](const Ptr& P) {
-      if (!cavity) return kbar > 0 ? P.th[c] * P.ka[c] / kbar : 0.0;
-      return std::isinf(P.ka[c]) ? P.th[c] / thetaCav : 0.0;
+        if (std::isinf(ka[r])) thetaCav += ptr[r].th[c];
+    auto volumeShare = [&](int r) {
+      const Ptr& P = ptr[r];
+      if (!cavity) return kbar > 0 ? P.th[c] * ka[r] / kbar : 0.0;
+      return std::isinf(ka[r]) ? P.th[c] / thetaCav : 0.0;
     };
     const double p = press[c];
     const double div = faces.divergence(dim, fls);
@@ -104,7 +110,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     for (int r = 0; r < n; ++r) {
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
-      const double f = P.th[c] > 0 ? volumeShare(P) / P.th[c] : (kbar > 0 && !cavity ? P.ka[c] / kbar : 0.0);
+      const double f = P.th[c] > 0 ? volumeShare(r) / P.th[c] : (kbar > 0 && !cavity ? ka[r] / kbar : 0.0);
       double ke0 = 0, ke1 = 0;
       for (int d = 0; d < dim; ++d) {
         const double u = P.u[d][c];
@@ -164,7 +170,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       double leftMax = 0;
       for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
-        const double share = (solid ? P.m[c] * P.cv / C : volumeShare(P)) * D;  // [J]
+        const double share = (solid ? P.m[c] * P.cv / C : volumeShare(r)) * D;  // [J]
         if (P.external) {
           if (P.m[c] > 0) {
             P.eL[c] += share / P.m[c];

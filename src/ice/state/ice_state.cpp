@@ -8,6 +8,10 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
   auto cell = [&](const std::string& n, int nc, double init = 0.0) {
     return Field(n, Centering::Cell, stored, nc, kGhost, init);
   };
+  // The Lagrangian specific volume apart from kappa only where the exchange's trace rule reads
+  // both (external materials; MaterialState::lagSpvol).
+  bool anyExternal = false;
+  for (const auto& m : mat) anyExternal = anyExternal || m.external;
   for (auto& m : mat) {
     m.mass = cell(m.name + "/mass", 1);
     m.vel = cell(m.name + "/velocity", dim);
@@ -17,7 +21,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
     m.kappa = cell(m.name + "/compressibility", 1);
     m.velL = m.external ? cell(m.name + "/velocity_L", dim) : Field();
     m.eintL = m.external ? cell(m.name + "/internal_energy_L", 1) : Field();
-    m.spvolL = cell(m.name + "/specific_volume_L", 1, 1.0);
+    m.spvolL = anyExternal ? cell(m.name + "/specific_volume_L", 1, 1.0) : Field();
     // Faces only in the mesh's directions; the exchange increments only where another
     // participant reads them (external materials): empty fields otherwise.
     for (int d = 0; d < 3; ++d)

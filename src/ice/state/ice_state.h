@@ -7,7 +7,8 @@
 /// density) and volume fraction, and the Lagrangian (post-source, post-exchange) velocity,
 /// energy and specific volume (a fluid's Lagrangian velocity and energy are its state fields
 /// themselves, updated in place from the Lagrangian phase to the advection; an external
-/// material's are copies, its state being its own solver's: lagVel, lagEint); face velocities live on the faces normal to each direction that
+/// material's are copies, its state being its own solver's: lagVel, lagEint; the Lagrangian
+/// specific volume takes kappa's array unless there are external materials: lagSpvol); face velocities live on the faces normal to each direction that
 /// bound this rank's cells (face index i = low face of cell i). The pressure fields are shared by
 /// all materials. Fields are stored over the owned box grown by kGhost layers.
 #include <array>
@@ -35,9 +36,14 @@ struct MaterialState {
   bool external = false;              // state supplied by another participant, not advected here
   std::unique_ptr<Eos> eos;
   double viscosity = 0, conductivity = 0;
-  core::Field mass, vel, eint, spvol, theta, kappa;  // kappa = 1 / (rho^micro c^2)
+  /// kappa = 1 / (rho^micro c^2), from the equilibrium to the Lagrangian phase (the exchange's
+  /// trace rule with external materials reads it later).
+  core::Field mass, vel, eint, spvol, theta, kappa;
   core::Field velL, eintL;  // Lagrangian velocity and energy of an external material (empty for a fluid)
-  core::Field spvolL;       // Lagrangian specific volume
+  /// The Lagrangian specific volume apart, with external materials only (the exchange's trace
+  /// rule reads it and kappa together); without them it is kappa's array (lagSpvol()): kappa's
+  /// last reader, the Lagrangian phase, reads a cell's kappa before it writes its volume there.
+  core::Field spvolL;
   /// A fluid's start-of-step internal energy and velocity, copied before the Lagrangian phase
   /// updates them in place, only where something after it reads them (the energy: heat
   /// conduction, and in coupled runs the embedded trace's temperature change; the velocity:
@@ -48,6 +54,9 @@ struct MaterialState {
   const core::Field& lagVel() const { return external ? velL : vel; }
   core::Field& lagEint() { return external ? eintL : eint; }
   const core::Field& lagEint() const { return external ? eintL : eint; }
+  /// The Lagrangian specific volume (see above).
+  core::Field& lagSpvol() { return spvolL.npts() > 0 ? spvolL : kappa; }
+  const core::Field& lagSpvol() const { return spvolL.npts() > 0 ? spvolL : kappa; }
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
   core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
   core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)

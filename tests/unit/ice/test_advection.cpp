@@ -85,7 +85,7 @@ TEST(IceAdvection, DonorInternalEnergyStaysPositiveWhenFaceValuesExceedItsOwn) {
     auto& m = sol.state().mat[0];
     for (int i = 0; i < 5; ++i) {
       m.theta(i, 0, 0) = 1.0;
-      m.spvol(i, 0, 0) = m.spvolL(i, 0, 0) = v[i];
+      m.spvol(i, 0, 0) = m.lagSpvol()(i, 0, 0) = v[i];
       m.mass(i, 0, 0) = V / v[i];
       m.lagEint()(i, 0, 0) = e[i];  // a fluid's state energy and velocity are its Lagrangian ones
       for (int d = 0; d < m.vel.ncomp(); ++d) m.lagVel()(i, 0, 0, d) = 0.0;

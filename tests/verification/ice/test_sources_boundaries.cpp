@@ -275,7 +275,7 @@ TEST(IceExchange, DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace) {
   const auto& owned = sol.ownedBox();
   const std::size_t n = static_cast<std::size_t>(owned.numPts());
   const auto& air = sol.state().mat[0];
-  auto airT = [&](int i) { return air.eos->temperature(1.0 / air.spvolL(i, 0, 0), air.lagEint()(i, 0, 0)); };
+  auto airT = [&](int i) { return air.eos->temperature(1.0 / air.lagSpvol()(i, 0, 0), air.lagEint()(i, 0, 0)); };
   std::vector<double> T0(n);
   core::forEach(owned, [&](int i, int j, int k) { T0[static_cast<std::size_t>(owned.index(i, j, k))] = airT(i); });
   std::vector<double> mom(3 * n, 0.0);
