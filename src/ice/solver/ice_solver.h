@@ -56,6 +56,9 @@ class IceSolver {
   void step();
   /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
   /// and with viscous fluids also the explicit viscous bound 1 / (2 nu sum_d dx_d^-2), nu = mu / rho.
+  /// It reads the equilibrium's compressibilities, whose array the Lagrangian phase fills with the
+  /// Lagrangian specific volume when no external material is present (MaterialState::lagSpvol):
+  /// ask between computeEquilibriumPressure and the Lagrangian phase, as step() and the coupler do.
   [[nodiscard]] double stableTimeStep() const;
   /// What sets the stable step now: the bound (CFL, viscous, time.dt_max), the cell, its centre
   /// and the materials' state there, for the time-step collapse error. Collective.
