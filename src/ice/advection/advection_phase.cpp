@@ -233,7 +233,7 @@ void IceSolver::advectFluids() {
             core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
   }
   // One set of whole-box arrays serves the cell mixtures (computeCellMixes: the stable step to the
-  // face pressure) and the advection's conserved amounts and fluid mass: the mixtures are invalid
+  // face pressure) and the advection's conserved amounts: the mixtures are invalid
   // from here to the next step's stable step, and the advection writes its arrays before it reads
   // them. Likewise the face volume fluxes and face pressures (the pressure increment and the face
   // pressure to the Lagrangian phase; computed again before the next step reads them) hold the
@@ -242,7 +242,6 @@ void IceSolver::advectFluids() {
   auto lend = [&] {
     std::swap(adv_.energy, mixes_.rho);
     std::swap(adv_.eint, mixes_.z);
-    std::swap(adv_.fluidMass, mixes_.p);
     for (std::size_t d = 0; d < 3; ++d) std::swap(adv_.momentum[d], mixes_.u[d]);
     for (std::size_t d = 0; d < 3; ++d) {
       if (!fluids.empty()) std::swap(adv_.mat[static_cast<std::size_t>(fluids[0])].massFlux[d], st_.volFlux[d]);
@@ -284,15 +283,82 @@ void IceSolver::advectFluids() {
     a[kEint] = adv_.eint.data();
   };
   // The owned cells in forEach's order (ownedCells_), by rows: f4(c) for the four cells c .. c + 3
-  // (the lanes), f1(c) for one (the rest of a row).
-  auto forOwnedRows = [&](auto&& f4, auto&& f1) {
+  // (the lanes), f1(c) for one (the rest of a row); row(j, k, c) before each row (c its first).
+  auto forOwnedRows = [&](auto&& f4, auto&& f1, auto&& row) {
     for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
       for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
         std::int64_t c = sb.index(owned_.lo[0], j, k);
+        row(j, k, c);
         int i = owned_.lo[0];
         for (; i + 3 <= owned_.hi[0]; i += 4, c += 4) f4(c);
         for (; i <= owned_.hi[0]; ++i, ++c) f1(c);
       }
+  };
+  // The fluids' mass after advection at the owned cells of row (j, k) (more than one fluid: the
+  // negligible-trace cut-off of the conversion, below), as fluid q's conversion reaches the row:
+  // each fluid's mass terms (pass 2's, in the same order for every cell: x low, x high, y low,
+  // y high, z low, z high) summed over the fluids in order. The fluids before q are converted
+  // (their mass, or the trace their conversion dropped), q's mass is accumulated, and those after
+  // q have their mass before advection, their mass fluxes and their outflow scale (in their
+  // specific volume's array until their conserved amounts, outflowScale) for their terms.
+  const std::int64_t faceStrides[3] = {1, owned_.faces(1).length(0),
+                                       std::int64_t(owned_.faces(2).length(0)) * owned_.faces(2).length(1)};
+  adv_.dropped.resize(static_cast<std::size_t>(nm));
+  auto fluidMassRow = [&](int q, int j, int k) {
+    const int nx = owned_.length(0);
+    adv_.fluidMassRow.assign(static_cast<std::size_t>(nx), 0.0);
+    double* out = adv_.fluidMassRow.data();
+    const std::int64_t c0 = sb.index(owned_.lo[0], j, k);
+    for (int r : fluids) {
+      const MaterialState& m = st_.mat[r];
+      const double* ms = m.mass.data();
+      if (r <= q) {
+        const auto& dropped = adv_.dropped[static_cast<std::size_t>(r)];  // in increasing cell order
+        auto t = r < q ? std::lower_bound(dropped.begin(), dropped.end(), c0,
+                                          [](const auto& e, std::int64_t c) { return e.first < c; })
+                       : dropped.end();
+        int i = 0;
+        if (t == dropped.end() || t->first >= c0 + nx)  // none in the row: four at a time (the lanes)
+          for (; i + 4 <= nx; i += 4) lanes::store(out + i, lanes::load(out + i) + lanes::load(ms + c0 + i));
+        for (; i < nx; ++i) {
+          double ma = ms[c0 + i];
+          if (t != dropped.end() && t->first == c0 + i) ma = (t++)->second;
+          out[i] += ma;
+        }
+        continue;
+      }
+      const double* sc = m.spvol.data();  // the outflow scale (outflowScale)
+      const double* Fm[3] = {nullptr, nullptr, nullptr};
+      std::int64_t f0[3] = {0, 0, 0};
+      for (int d = 0; d < dim; ++d) {
+        Fm[d] = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
+        f0[d] = owned_.faces(d).index(owned_.lo[0], j, k);
+      }
+      int i = 0;
+      for (; i + 4 <= nx; i += 4) {  // the lanes: the same operations, a face with F = 0 a select
+        using lanes::v4d, lanes::load, lanes::sel;
+        const std::int64_t c = c0 + i;
+        v4d ma = load(ms + c);
+        for (int d = 0; d < dim; ++d) {
+          const std::int64_t sd = strides[d], fl = f0[d] + i;
+          const v4d FL = load(Fm[d] + fl), FH = load(Fm[d] + fl + faceStrides[d]);
+          ma = sel(FL != 0, ma + sel(FL > 0, load(sc + c - sd), load(sc + c)) * FL, ma);
+          ma = sel(FH != 0, ma - sel(FH > 0, load(sc + c), load(sc + c + sd)) * FH, ma);
+        }
+        lanes::store(out + i, load(out + i) + ma);
+      }
+      for (; i < nx; ++i) {
+        const std::int64_t c = c0 + i;
+        double ma = ms[c];
+        for (int d = 0; d < dim; ++d) {
+          const std::int64_t sd = strides[d], fl = f0[d] + i;
+          const double FL = Fm[d][fl], FH = Fm[d][fl + faceStrides[d]];
+          if (FL != 0) ma += (FL > 0 ? sc[c - sd] : sc[c]) * FL;
+          if (FH != 0) ma -= (FH > 0 ? sc[c] : sc[c + sd]) * FH;
+        }
+        out[i] += ma;
+      }
+    }
   };
   // One fluid's primitive values from its conserved amounts, once its fluxes are all applied:
   // velocity, specific volume and internal energy (its velocity and energy, the face values'
@@ -306,7 +372,12 @@ void IceSolver::advectFluids() {
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     const auto u = core::components(m.vel);
     const double* vL = m.lagSpvol().data();
-    const double* fluidMass = oneFluid ? a[kMass] : adv_.fluidMass.data();  // read before the cell's own write
+    // The cells' fluid mass after advection, cell c's at fm + (c - fmOff): with one fluid its own
+    // (read before the cell's own write), else the row's (fluidMassRow).
+    const double* fm = a[kMass];
+    std::int64_t fmOff = 0;
+    auto& dropped = adv_.dropped[static_cast<std::size_t>(r)];
+    dropped.clear();
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
@@ -316,8 +387,9 @@ void IceSolver::advectFluids() {
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
       // energy they held is audited). They keep the Lagrangian values (velocity and energy: as they are).
-      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * fluidMass[c]) {
+      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * fm[c - fmOff]) {
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
+        if (!oneFluid && (mass != 0 || std::signbit(mass))) dropped.push_back({c, mass});  // not +0: fluidMassRow
         ms[c] = 0;
         v[c] = vL[c];
         return;
@@ -359,7 +431,7 @@ void IceSolver::advectFluids() {
       if constexpr (DIM > 0) {
         if (!cold) {
           const v4d mass = load(a[kMass] + c);
-          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(fluidMass + c));
+          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(fm + (c - fmOff)));
           const v4d inv = 1.0 / mass;
           v4d ud[DIM], ke = lanes::splat(0.0);
           for (int d = 0; d < DIM; ++d) {
@@ -383,7 +455,12 @@ void IceSolver::advectFluids() {
       }
       for (int l = 0; l < 4; ++l) cell(c + l);
     };
-    forOwnedRows(cellLanes, cell);
+    forOwnedRows(cellLanes, cell, [&](int j, int k, std::int64_t c) {
+      if (oneFluid) return;
+      fluidMassRow(r, j, k);
+      fm = adv_.fluidMassRow.data();
+      fmOff = c;
+    });
   };
   auto convert = [&](int r) {
     if (dim == 2) convertDim.template operator()<2>(r);
@@ -584,7 +661,7 @@ void IceSolver::advectFluids() {
         st(a[kEint], mass * ec);
       };
       forOwnedRows([&](std::int64_t c) { cell.template operator()<lanes::v4d>(c); },
-                   [&](std::int64_t c) { cell.template operator()<double>(c); });
+                   [&](std::int64_t c) { cell.template operator()<double>(c); }, [](int, int, std::int64_t) {});
     };
     auto conserved = [&](int r) {
       if (dim == 2) conservedDim.template operator()<2>(r);
@@ -904,59 +981,11 @@ void IceSolver::advectFluids() {
       else if (dim == 2) pass2RowDim.template operator()<2>(P, d, j, k, ilo, ihi);
       else pass2RowDim.template operator()<3>(P, d, j, k, ilo, ihi);
     };
-    // The cells' fluid mass after advection, for the negligible-trace cut-off of the conversion
-    // (below), before the first fluid is converted: each fluid's mass terms (pass 2's, in the same
-    // order for every cell) summed apart; with one fluid none (its outflow scale is then computed
-    // where it is advected).
-    if (!oneFluid) {
-      adv_.fluidMass.assign(npts, 0.0);
-      for (int r = 0; r < nm; ++r) {
-        const MaterialState& m = st_.mat[r];
-        if (m.external) continue;
-        outflowScale(r);
-        // Its mass after advection in the conserved internal energy's array (free until the fluids'
-        // passes below fill it).
-        std::copy(m.mass.data(), m.mass.data() + npts, adv_.eint.begin());
-        double* ma = adv_.eint.data();
-        const double* sc = m.spvol.data();  // the outflow scale (outflowScale)
-        for (int d = 0; d < dim; ++d) {
-          const core::Box fb = owned_.faces(d);
-          const double* Fm = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
-          const std::int64_t sd = strides[d];
-          for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
-            for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
-              std::int64_t fi = fb.index(fb.lo[0], j, k), cR = sb.index(fb.lo[0], j, k);
-              int i = fb.lo[0];
-              if (dim >= 2) {  // four faces at once (applyLanes); along x the inner faces only
-                const int jk = d == 1 ? j : k;
-                const bool ownL = d == 0 || jk > owned_.lo[d], ownR = d == 0 || jk <= owned_.hi[d];
-                const int i1 = d == 0 ? owned_.hi[0] : fb.hi[0];
-                if (d == 0) {  // the first face (a ghost on its low side) alone
-                  const double F = Fm[fi];
-                  if (F != 0) ma[cR] += (F > 0 ? sc[cR - sd] : sc[cR]) * F;
-                  ++i, ++fi, ++cR;
-                }
-                for (; i + 3 <= i1; i += 4, fi += 4, cR += 4) {
-                  const lanes::v4d F = lanes::load(Fm + fi);
-                  const lanes::v4m nz = F != 0;
-                  const lanes::v4d v = lanes::sel(F > 0, lanes::load(sc + cR - sd), lanes::load(sc + cR)) * F;
-                  applyLanes(ma, v, nz, cR - sd, cR, d == 0, ownL, ownR);
-                }
-              }
-              for (; i <= fb.hi[0]; ++i, ++fi, ++cR) {
-                const double F = Fm[fi];
-                if (F == 0) continue;
-                const std::int64_t cL = cR - sd;
-                const int id = d == 0 ? i : (d == 1 ? j : k);
-                const double v = (F > 0 ? sc[cL] : sc[cR]) * F;
-                if (id > owned_.lo[d]) ma[cL] -= v;
-                if (id <= owned_.hi[d]) ma[cR] += v;
-              }
-            }
-        }
-        ownedCells_.forEach([&](std::size_t, std::int64_t c) { adv_.fluidMass[static_cast<std::size_t>(c)] += ma[c]; });
-      }
-    }
+    // More than one fluid: every fluid's outflow scale before the first is advected (the fluid
+    // mass after advection, fluidMassRow, reads those of the fluids after the one converted); with
+    // one fluid where it is advected.
+    if (!oneFluid)
+      for (int r : fluids) outflowScale(r);
 
     // One fluid after the other: its outflow scale, isentrope fits and conserved amounts, pass 2
     // with its blend sums, the blend pass, and its conversion back to primitive values.

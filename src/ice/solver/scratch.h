@@ -70,8 +70,8 @@ struct AdvectionScratch {
   /// as the isentrope fits below), put back from `capped` as the flux passes reach slab s.
   std::vector<double> scaleWindow;
   /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
-  /// m (e + |u|^2 / 2), m e (before the passes, each fluid's mass after advection, for fluidMass).
-  /// These, and fluidMass, are the cell mixtures' arrays, lent to the advection (advectFluids).
+  /// m (e + |u|^2 / 2), m e. These are the cell mixtures' arrays, lent to the advection
+  /// (advectFluids).
   std::array<std::vector<double>, 3> momentum;
   std::vector<double> energy, eint;
   /// Over the owned cells of two consecutive slabs, kRemSums arrays one after the other (a row's
@@ -88,7 +88,12 @@ struct AdvectionScratch {
   /// Over two slabs of stored cells (s - 1 and s, consecutive as in the stored box), made as the
   /// flux passes reach slab s (advection_phase.cpp, fitWindow).
   std::vector<double> isenGamma, isenPi;
-  std::vector<double> fluidMass;  // per stored cell: the fluids' mass after advection (more than one fluid)
+  /// More than one fluid: the fluids' mass after advection over one row of owned cells, made as
+  /// a fluid's conversion reaches the row (advection_phase.cpp, fluidMassRow), and per fluid the
+  /// owned cells whose nonzero mass after advection its conversion dropped (a trace), in
+  /// increasing cell order, for the conversions of the fluids after it.
+  std::vector<double> fluidMassRow;
+  std::vector<std::vector<std::pair<std::int64_t, double>>> dropped;
   /// The batch EOS arguments of the isentrope fits, kEosChunk cells at a time.
   static constexpr std::size_t kEosChunk = 512;
   std::vector<double> eosRho, eosE, eosP1, eosP2;
