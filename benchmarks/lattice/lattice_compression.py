@@ -58,7 +58,6 @@ SCENES = [  # (config, a [m], rho*/rho_s of the slides' 3D cell)
 ]
 SIGMA_Y = 50e6            # the polymer's static yield stress (the configs)
 RATE_C, RATE_P = 1.0e5, 2.0
-PLATE, POLYMER = 1, 0     # material indices (order of the configs' materials)
 PORE_D = 3.0e-3           # the slides' pore diameter
 # The filler: a silicone oil (polydimethylsiloxane), rho 970 kg/m^3 and c 1000 m/s (Dow Corning 200
 # fluid data: 0.97 g/cm^3, sound speed about 990 m/s at 25 C, nearly independent of viscosity
@@ -95,16 +94,21 @@ def curve(directory, name):
     for f in files:
         with h5py.File(f, "r") as h:
             m = h["particles/mass"][:]
-            mat = h["particles/material"][:] if "particles/material" in h else \
-                np.where(m / h["particles/volume"][:] > 1e6, PLATE, POLYMER)  # mpmice: the plate by its density
+            rho = m / h["particles/volume"][:]
+            # The plate: the material of the densest particle (its index depends on how many
+            # fluids the scene lists first); without material indices, by its density.
+            if "particles/material" in h:
+                mat = h["particles/material"][:]
+                plate = mat == mat[np.argmax(rho)]
+            else:
+                plate = rho > 1e6
             v = h["particles/velocity"][:, 1]
             pos = h["particles/position"][:, 1]
-            plate = mat == PLATE
             t.append(float(h.attrs["time"]))
             p.append(float(np.sum(m[plate] * v[plate])))
             y.append(float(np.mean(pos[plate])))
             if vol0 is None:
-                vol0 = float(np.sum(h["particles/volume"][:][mat == POLYMER]))
+                vol0 = float(np.sum(h["particles/volume"][:][~plate]))
     t, p, y = map(np.array, (t, p, y))
     force = np.diff(p) / np.diff(t)                    # on the plate, upwards: the lattice's push
     travel = 0.5 * ((y[0] - y[1:]) + (y[0] - y[:-1]))  # at the interval's middle

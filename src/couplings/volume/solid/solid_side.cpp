@@ -90,6 +90,10 @@ core::ParticleOutput SolidSide::particleOutput() const {
   std::vector<std::span<const double>> st;
   for (int c = 0; c < 6; ++c) st.push_back(span(p.column(p.stress[c])));
   out.addVector("stress", st);
+  materialOut_.assign(p.material.begin(), p.material.end());
+  idOut_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) idOut_[i] = static_cast<double>(p.id[i]);
+  out.addScalar("material", span(materialOut_)).addScalar("id", span(idOut_));
   return out;
 }
 

@@ -36,7 +36,8 @@ class SolidSide {
   [[nodiscard]] mpm::MpmSolver& solver() { return mpm_; }
   /// Mass, momentum and energy (kinetic + stress work) of the particles (collective).
   [[nodiscard]] SideTotals totals() const;
-  /// The particle arrays for the OutputWriter (views into the solver's storage).
+  /// The particle arrays for the OutputWriter (views into the solver's storage; the material
+  /// index and the global id as doubles, as mpm_solver writes them, kept here).
   [[nodiscard]] core::ParticleOutput particleOutput() const;
   /// The solver and the held exchange fields under `prefix`, for a checkpoint; load puts them back.
   void saveCheckpoint(core::CheckpointData& data, const std::string& prefix) const {
@@ -52,6 +53,7 @@ class SolidSide {
   mpm::MpmSolver& mpm_;
   bool faceTransport_;  // coupling.solid_transport mpm: the solid state carries the face transport
   std::vector<SolidExchangeFields> fields_;
+  mutable std::vector<double> materialOut_, idOut_;  // particleOutput's material index and id
 };
 
 }  // namespace mpmice::coupler
