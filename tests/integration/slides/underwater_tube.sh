@@ -34,10 +34,19 @@ with h5py.File(f) as h:
     x = h["particles/position"][:]
     T = h["particles/temperature"][:]
     t = float(h.attrs["time"])
+    # mpmice writes each particle's material (its index in the scene's materials) and global id.
+    if "particles/material" not in h or "particles/id" not in h:
+        print("FAIL: no particles/material or particles/id in " + f)
+        sys.exit(1)
+    mat, ids = h["particles/material"][:], h["particles/id"][:]
 tube = (x[:, 0] > 0.008) & (x[:, 1] > 0.2)   # the tube's particles (the foam lies below 3 cm)
 print(f"t = {t:.3g} s: {tube.sum()} tube particles, temperature {T[tube].min():.2f} .. {T[tube].max():.2f} K")
 if t < 1.2e-5 * (1 - 1e-9) or tube.sum() == 0 or not (T[tube].min() > 0):
     print("FAIL: tube state")
+    sys.exit(1)
+# The scene lists water, air, products, pvc, foam: the tube is material 3, the foam 4; ids unique.
+if set(mat[tube].tolist()) != {3.0} or set(mat[~tube].tolist()) != {4.0} or len(set(ids.tolist())) != len(ids):
+    print(f"FAIL: material indices {sorted(set(mat.tolist()))} or ids not as expected")
     sys.exit(1)
 PY
 echo "PASS: underwater tube"
