@@ -513,6 +513,17 @@ void IceSolver::setExternalCouplingWork(int material, std::span<const double> wo
   forEach(owned_, [&](int i, int j, int k) { m.couplingWork(i, j, k) = work[static_cast<std::size_t>(owned_.index(i, j, k))]; });
 }
 
+void IceSolver::setExternalVolumeChange(int material, std::span<const double> volumeChange) {
+  MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
+  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
+  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
+  if (volumeChange.size() != n) throw std::invalid_argument("ice: external volume change has the wrong size");
+  forEach(owned_, [&](int i, int j, int k) {
+    m.volumeChange(i, j, k) = volumeChange[static_cast<std::size_t>(owned_.index(i, j, k))];
+  });
+  m.volumeChangeGiven = true;
+}
+
 Field IceSolver::pressureForce(int material) const {
   const MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
   Field f(m.name + "/pressure_force", core::Centering::Cell, owned_, 3, 0);

@@ -98,6 +98,13 @@ class IceSolver {
   /// computeSourcesAndLagrangian: the fluids' energy change there is the flux form of the cell's
   /// p dV work less this work (energy conservation with external materials). Zero unless set.
   void setExternalCouplingWork(int material, std::span<const double> work);
+  /// External material m's own volume change over the step [m^3] per owned cell, as its solver
+  /// realises it (MPM: its particles' volumes times the trace of the velocity gradient the
+  /// coupling work uses). Before computeSourcesAndLagrangian. Once set, the Lagrangian phase books
+  /// the p dV work of the difference between it and the material's share of the cell's volume
+  /// change to the cell's fluids (docs/coupling.md, "The solid's own volume change"); unset, that
+  /// difference stays in the energy correction shared by heat capacity.
+  void setExternalVolumeChange(int material, std::span<const double> volumeChange);
   void exchange();
   /// The end of exchange() with solids: each fluid's temperature moves the fraction of the cell's
   /// compliance the solids carry towards theirs (src/ice/exchange/trace_temperature.cpp).

@@ -38,6 +38,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     double cv;
     bool external;
     const double* work;  // an external material's coupling work, owned cells (index oc below)
+    const double* dVs;   // its own volume change, owned cells (null: not given)
     double* dEn;         // its exchange energy, owned cells
     const Eos* eos;
     bool cold;  // the EOS has a cold energy (e - e_cold is the thermal energy the fix guards)
@@ -57,7 +58,9 @@ void IceSolver::computeSourcesAndLagrangian() {
     const auto uL = core::components(m.lagVel());
     ptr[r] = {m.theta.data(), m.kappa.data(), m.spvol.data(), m.mass.data(), {u[0], u[1], u[2]}, m.eint.data(),
               {uL[0], uL[1], uL[2]}, m.lagEint().data(), m.lagSpvol().data(), m.eos->cv(), m.external,
-              m.external ? m.couplingWork.data() : nullptr, m.external ? m.dEnergy.data() : nullptr, m.eos.get(),
+              m.external ? m.couplingWork.data() : nullptr,
+              m.external && m.volumeChangeGiven ? m.volumeChange.data() : nullptr,
+              m.external ? m.dEnergy.data() : nullptr, m.eos.get(),
               m.eos->coldEnergy(1.0) != 0.0};
   }
   const double* press = st_.press.data();
@@ -152,6 +155,34 @@ void IceSolver::computeSourcesAndLagrangian() {
         C += P.m[c] * P.cv;
         solid = solid || (P.external && P.m[c] > 0);
       }
+      // With the solids' own volume change given (their solvers' figure, dV_s): the cell's fluids
+      // fill the rest of the cell's volume change, so the p dV work of the difference between dV_s
+      // and the solids' share of the cell's (theta_s kappa_s / kbar of V dt div U, what the
+      // fluids' update above assumed) is theirs: Dv = p (dV_s - share). Where a solid compresses
+      // faster than its share (a PVC tube crushed by detonation products), the products that
+      // push it pay, not the cell's heat capacities (water at 1374 kg/m^3 beside it went below
+      // 0 K that way, docs/coupling.md "The solid's own volume change"). The fluids take Dv in
+      // proportion to their share of the cell's volume change, times the volume fraction they
+      // fill: a trace of fluid in a solid's cell fills nothing and takes nothing (the rest goes
+      // with D by heat capacity).
+      double Dv = 0, thf = 0, kf = 0;
+      if (solid) {
+        bool given = false;
+        double dVs = 0, share = 0;
+        for (int r = 0; r < n; ++r) {
+          const Ptr& P = ptr[r];
+          if (!P.external) {
+            thf += P.th[c];
+            kf += volumeShare(r);
+          } else if (P.dVs) {
+            given = true;
+            dVs += P.dVs[oc];
+            share += V * dt * volumeShare(r) * div;
+          }
+        }
+        if (given && kf > 0) Dv = p * (dVs - share);
+      }
+      const double Dr = D - thf * Dv;  // what the heat capacities share
       // Gives `share` [J] to fluid r unless it would drain its thermal energy e - e_cold (a
       // Mie-Gruneisen liquid with a reference temperature T0 has e = 0 at T0: e < 0 is a state
       // below T0, not below 0 K); returns whether it took it.
@@ -170,7 +201,8 @@ void IceSolver::computeSourcesAndLagrangian() {
       double leftMax = 0;
       for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
-        const double share = (solid ? P.m[c] * P.cv / C : volumeShare(r)) * D;  // [J]
+        double share = (solid ? P.m[c] * P.cv / C : volumeShare(r)) * Dr;  // [J]
+        if (Dv != 0 && !P.external) share += thf * volumeShare(r) / kf * Dv;
         if (P.external) {
           if (P.m[c] > 0) {
             P.eL[c] += share / P.m[c];

@@ -29,6 +29,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
     m.dMom = m.external ? Field(m.name + "/exchange_momentum", Centering::Cell, owned, 3, 0) : Field();
     m.dEnergy = m.external ? Field(m.name + "/exchange_energy", Centering::Cell, owned, 1, 0) : Field();
     m.couplingWork = m.external ? Field(m.name + "/coupling_work", Centering::Cell, owned, 1, 0) : Field();
+    m.volumeChange = m.external ? Field(m.name + "/volume_change", Centering::Cell, owned, 1, 0) : Field();
   }
   press = cell("pressure", 1);
   dp = semiImplicit ? cell("pressure_increment", 1) : Field();

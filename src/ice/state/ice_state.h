@@ -60,6 +60,10 @@ struct MaterialState {
   std::array<core::Field, 3> velFace;                // face velocity normal to each direction (empty beyond dim)
   core::Field dMom, dEnergy;          // exchange increments (external materials only; owned cells)
   core::Field couplingWork;           // work of the pressure forces on an external material [J] (owned)
+  /// An external material's own volume change over the step [m^3] (owned), as its solver reports
+  /// it (IceSolver::setExternalVolumeChange); `volumeChangeGiven` once it has been set.
+  core::Field volumeChange;
+  bool volumeChangeGiven = false;
   // External materials with a face transport (coupling.solid_transport mpm): at the low face of
   // each cell per direction, the face density [kg/m^3] and mass flux [kg/(m^2 s)] of the solid's
   // smeared mass as its own solver moves it (3 components; stored with ghosts). Empty otherwise.

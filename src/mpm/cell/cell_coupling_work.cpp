@@ -86,33 +86,37 @@ void NodeCellOperators::addCellVectorPower(int material, const std::vector<doubl
   });
 }
 
-void NodeCellOperators::cellCouplingWork(int material, Field& out, double dt) {
+void NodeCellOperators::cellCouplingWork(int material, Field& out, double dt, Field* volumeChange) {
   current(material, "cellCouplingWork");
   out.fill(0.0);
+  if (volumeChange) volumeChange->fill(0.0);
   const auto mi = static_cast<std::size_t>(material);
   const bool force = mi < cellForce_.size() && cellForceStamp_[mi] == generation_;
   const bool stress = stressForceStamp_ == generation_ && stressForce_.size() == 5 * p_.size();
-  if (!force && !stress) return;
+  if (!force && !stress && !volumeChange) return;
   Grid& g = grid_;
   if (nodeScratch_.npts() == 0)
     nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), g.velocityL.ncomp(), Grid::kGhost);
   Field& vb = nodeScratch_;
   meanNodeVelocity(g.velocity, g.velocityL, workFloor_, vb);
   if (force) addCellVectorPower(material, cellForce_[mi], vb, dt, out);
-  if (!stress) return;
-  // The mean-stress forces: -V_p S_p : L~_p, S = iso I + ex n n (V folded into iso and ex).
+  if (!stress && !volumeChange) return;
+  // The mean-stress forces: -V_p S_p : L~_p, S = iso I + ex n n (V folded into iso and ex); the
+  // volume change dt V_p tr(L~_p).
   const ParticleCells& pc = particleCells(material);
   const auto vbd = components(std::as_const(vb));
   double* W = out.data();
+  double* dV = volumeChange ? volumeChange->data() : nullptr;
   const auto [b, e] = p_.materialRange(material);
   const GridGeom geom = g.geom();
   const std::vector<unsigned char>& openFace = openFaceNodes();
-  const bool anyOpen = openAny_ && openQ_.size() == openFace.size();
+  const bool anyOpen = stress && openAny_ && openQ_.size() == openFace.size();
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     for (std::size_t i = b; i < e; ++i) {
-      const double* sf = &stressForce_[5 * i];
-      if (sf[0] == 0.0 && sf[1] == 0.0 && !anyOpen) continue;
+      static constexpr double kNoStress[5] = {0, 0, 0, 0, 0};
+      const double* sf = stress ? &stressForce_[5 * i] : kNoStress;
+      if (sf[0] == 0.0 && sf[1] == 0.0 && !anyOpen && !dV) continue;
       double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
       double open = 0;  // the open-face nodes' term (addCellPressureStress): V_p q_k grad w_ip . vbar_k
       st.compute(p_, i, geom);
@@ -131,6 +135,7 @@ void NodeCellOperators::cellCouplingWork(int material, Field& out, double dt) {
         for (int c = 0; c < D; ++c) nLn += sf[2 + a] * L[a][c] * sf[2 + c];
       }
       W[pc.slot[i - b]] -= dt * (sf[0] * trace + sf[1] * nLn - p_.vol[i] * open);
+      if (dV) dV[pc.slot[i - b]] += dt * p_.vol[i] * trace;
     }
   });
 }

@@ -171,7 +171,11 @@ class NodeCellOperators {
   /// mean node velocity (v + v_L) / 2 at its stencil nodes, dt times; a cell without particles
   /// of m, its force on the corner nodes. Summed over cells and materials it is the nodes' work
   /// sum_i dt f_i . (v_i + v_L,i) / 2 that the grid update realised. After updateGrid.
-  void cellCouplingWork(int material, core::Field& out, double dt);
+  /// `volumeChange` (optional, owned cells): the solid's own volume change over the step in each
+  /// cell, dt sum_p V_p tr(L~_p) over m's particles in it, L~_p the gradient of the same mean node
+  /// velocity (the volume the mean-stress work above acts on; ICE's Lagrangian phase lets the
+  /// cell's fluids take the rest of the cell's volume change, docs/coupling.md).
+  void cellCouplingWork(int material, core::Field& out, double dt, core::Field* volumeChange = nullptr);
   /// The node mass below which the grid update does not accelerate a node (and the coupling
   /// forces do no work there): MpmSolver's floor.
   void setWorkMassFloor(double floor) { workFloor_ = floor; }

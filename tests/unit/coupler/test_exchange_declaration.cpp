@@ -25,10 +25,10 @@ TEST(ExchangeDeclaration, SeedCylinderMovesTwoComponentsOfEachVectorInTwoDimensi
   EXPECT_EQ(lists(travel, scene),
             "steel: mass velocity(2) temperature specific_volume\n"
             "steel: pressure_force(2) pressure\n"
-            "steel: lagrangian_momentum(2) coupling_work\n"
+            "steel: lagrangian_momentum(2) coupling_work volume_change\n"
             "steel: exchange_momentum(2) exchange_energy\n");
-  EXPECT_EQ(travel.valuesPerCell(), 14);
-  EXPECT_EQ(FieldUses::everything(1).valuesPerCell(), 18);
+  EXPECT_EQ(travel.valuesPerCell(), 15);
+  EXPECT_EQ(FieldUses::everything(1).valuesPerCell(), 19);
 }
 
 // The flap's scene also moves its volume with MPM's face transport (coupling.solid_transport:
@@ -39,7 +39,7 @@ TEST(ExchangeDeclaration, FlapWithHeatExchangeMovesTheExchangeEnergy) {
   EXPECT_EQ(lists(travel, scene),
             "flap: mass velocity(2) temperature specific_volume face_density(2) face_flux(2)\n"
             "flap: pressure_force(2) pressure\n"
-            "flap: lagrangian_momentum(2) coupling_work\n"
+            "flap: lagrangian_momentum(2) coupling_work volume_change\n"
             "flap: exchange_momentum(2) exchange_energy\n");
 }
 

@@ -196,6 +196,81 @@ TEST(IceExternal, CouplingPhasesWithASolidBlock) {
   EXPECT_NEAR(sol.time(), 1e-5, 1e-18);
 }
 
+// The solid's own volume change (its solver's figure, setExternalVolumeChange): the cell's fluids
+// fill the rest of the cell's volume change, so the p dV work of the difference between it and the
+// solid's share of the cell's change is theirs, taken in proportion to the volume they fill; the
+// rest of the energy correction is shared by heat capacity as before. The block of
+// IceExternal.CouplingPhasesWithASolidBlock (steel 30 % of two cells, air around it) run to the
+// end of the Lagrangian phase twice, the second time with the steel compressing by 1e-3 of its
+// volume: in the block's cells the air's energy changes by theta_air p dV (m_s c_s / C), the steel's
+// by minus that (the total is kept), elsewhere nothing changes. Without the volume change (before
+// the solid reported it) the air's energy did not depend on it.
+TEST(IceExternal, TheSolidsOwnVolumeChangeIsWorkOfTheFluidsThatFillTheRest) {
+  core::Scene s;
+  s.name = "volume_change";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.materials = {test::idealGas("air"), test::externalSteel()};
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2, {10, 0, 0})};
+  const double v0 = 1.0 / core::SolidBulkEos(117e9, 101325, 8900).density(1e5);
+  struct Out {
+    std::vector<double> air, steel, p, thAir, mAir, mSteel, dV;
+  };
+  auto run = [&](bool given) {
+    ice::IceSolver sol(s, test::comm());
+    const auto& owned = sol.ownedBox();
+    const std::size_t n = static_cast<std::size_t>(owned.numPts());
+    const double V = sol.mesh().cellVolume();
+    std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0), dV(n, 0.0), work(n, 0.0);
+    core::forEach(owned, [&](int i, int j, int k) {
+      const auto q = static_cast<std::size_t>(owned.index(i, j, k));
+      const double x = sol.mesh().cellCenter(0, i);
+      if (x > 0.4 && x < 0.6) mass[q] = 0.3 * V / v0, dV[q] = -1e-3 * 0.3 * V;
+    });
+    sol.setExternalMaterialState(1, mass, vel, T, sv);
+    sol.computeEquilibriumPressure();
+    sol.beginStep(1e-5);
+    sol.computeFaceVelocities();
+    sol.computePressureIncrement();
+    sol.computeFacePressure();
+    sol.setExternalCouplingWork(1, work);
+    if (given) sol.setExternalVolumeChange(1, dV);
+    Out o;
+    o.dV = dV;
+    const auto& air = sol.state().mat[0];
+    sol.computeSourcesAndLagrangian();
+    core::forEach(owned, [&](int i, int j, int k) {
+      o.air.push_back(air.mass(i, j, k) * air.lagEint()(i, j, k));
+      o.steel.push_back(sol.exchangeEnergy(1)(i, j, k));
+      o.p.push_back(sol.pressure()(i, j, k));
+      o.thAir.push_back(air.theta(i, j, k));
+      o.mAir.push_back(air.mass(i, j, k));
+      o.mSteel.push_back(sol.state().mat[1].mass(i, j, k));
+    });
+    return o;
+  };
+  const Out a = run(false), b = run(true);
+  const double cvAir = 717.5, cvSteel = 450;  // test::idealGas("air"), test::externalSteel()
+  double total = 0, scale = 0;
+  for (std::size_t q = 0; q < a.air.size(); ++q) {
+    const double dAir = b.air[q] - a.air[q], dSteel = b.steel[q] - a.steel[q];
+    total += dAir + dSteel;
+    scale += std::abs(dAir);
+    if (b.mSteel[q] == 0) {
+      EXPECT_EQ(dAir, 0.0) << q;
+      EXPECT_EQ(dSteel, 0.0) << q;
+      continue;
+    }
+    const double C = b.mAir[q] * cvAir + b.mSteel[q] * cvSteel;
+    const double expect = b.thAir[q] * b.p[q] * b.dV[q] * b.mSteel[q] * cvSteel / C;  // < 0: the air expands
+    EXPECT_LT(dAir, 0.0) << q;
+    EXPECT_NEAR(dAir, expect, 1e-4 * std::abs(expect)) << q;
+    EXPECT_NEAR(dSteel, -expect, 1e-4 * std::abs(expect)) << q;
+  }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(std::abs(total), 1e-12 * scale);
+}
+
 // Solids smeared over cells by the node-to-cell average: a cell may receive more solid mass than
 // fits (m v0 > V). The equilibrium clips the solid to the cell, so the pressure stays the solid's
 // own (p_ref at its reference specific volume) instead of compressing it by the overfill (GPa).

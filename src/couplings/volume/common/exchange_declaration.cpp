@@ -18,7 +18,7 @@ const PointFields& fieldsOf(ExchangePoint p) {
   static const std::array<PointFields, 4> table{
       PointFields{{"mass", "velocity", "temperature", "specific_volume", "face_density", "face_flux"}, {1, 3, 1, 1, 3, 3}},
       PointFields{{"pressure_force", "pressure"}, {3, 1}},
-      PointFields{{"lagrangian_momentum", "coupling_work"}, {3, 1}},
+      PointFields{{"lagrangian_momentum", "coupling_work", "volume_change"}, {3, 1, 1}},
       PointFields{{"exchange_momentum", "exchange_energy"}, {3, 1}}};
   return table[static_cast<std::size_t>(p)];
 }
@@ -84,7 +84,7 @@ ExchangeDeclaration solidDeclaration(const core::Scene& scene) {
   const int dim = scene.mesh.dim();
   ExchangeDeclaration d{none(solids.size()), none(solids.size())};
   setAll(d.writes, ExchangePoint::SolidState, solidStateComponents(scene));
-  setAll(d.writes, ExchangePoint::LagrangianMomentum, {dim, 1});
+  setAll(d.writes, ExchangePoint::LagrangianMomentum, {dim, 1, 1});
   const bool dragOrHeat = exchanges(scene, -1, false) || exchanges(scene, -1, true);
   for (std::size_t s = 0; s < solids.size(); ++s) {
     d.reads.at[index(ExchangePoint::PressureForce)][s] = {dim, s == 0 ? 1 : 0};
@@ -99,7 +99,7 @@ ExchangeDeclaration fluidDeclaration(const core::Scene& scene) {
   const int dim = scene.mesh.dim();
   ExchangeDeclaration d{none(solids), none(solids)};
   setAll(d.reads, ExchangePoint::SolidState, solidStateComponents(scene));
-  setAll(d.reads, ExchangePoint::LagrangianMomentum, {dim, 1});
+  setAll(d.reads, ExchangePoint::LagrangianMomentum, {dim, 1, 1});
   setAll(d.writes, ExchangePoint::PressureForce, {dim, 1});
   setAll(d.writes, ExchangePoint::ExchangeIncrements, {dim, 1});
   return d;

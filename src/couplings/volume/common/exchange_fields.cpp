@@ -16,6 +16,7 @@ SolidExchangeFields::SolidExchangeFields(int m, const std::string& n, const core
       pressure(n + "/pressure", core::Centering::Cell, owned, 1, 0),
       lagrangianMomentum(n + "/lagrangian_momentum", core::Centering::Cell, owned, 3, 0),
       couplingWork(n + "/coupling_work", core::Centering::Cell, owned, 1, 0),
+      volumeChange(n + "/volume_change", core::Centering::Cell, owned, 1, 0),
       exchangeMomentum(n + "/exchange_momentum", core::Centering::Cell, owned, 3, 0),
       exchangeEnergy(n + "/exchange_energy", core::Centering::Cell, owned, 1, 0) {}
 
@@ -37,7 +38,7 @@ std::vector<core::Field*> SolidExchangeFields::at(ExchangePoint p) {
   switch (p) {
     case ExchangePoint::SolidState: return {&mass, &velocity, &temperature, &specificVolume, &faceDensity, &faceFlux};
     case ExchangePoint::PressureForce: return {&pressureForce, &pressure};
-    case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum, &couplingWork};
+    case ExchangePoint::LagrangianMomentum: return {&lagrangianMomentum, &couplingWork, &volumeChange};
     case ExchangePoint::ExchangeIncrements: return {&exchangeMomentum, &exchangeEnergy};
   }
   return {};

@@ -12,7 +12,9 @@
 ///                                           cell pressure [Pa]
 ///   LagrangianMomentum     solid -> fluid   Lagrangian momentum of the solid (3)        the grid update
 ///                                           [kg m/s], the work the fluid's forces did
-///                                           on it in the grid update [J]
+///                                           on it in the grid update [J], the solid's
+///                                           volume change over the step [m^3] (its
+///                                           velocity gradient on its particles' volumes)
 ///   ExchangeIncrements     fluid -> solid   exchange increments of the solid:           the exchange
 ///                                           momentum (3) [kg m/s], energy [J]
 /// Every field covers the owned cells of its side's rank, component-major, no ghosts.
@@ -45,7 +47,7 @@ struct SolidExchangeFields {
   core::Field mass, velocity, temperature, specificVolume;  // SolidState
   core::Field faceDensity, faceFlux;                         // SolidState (solid_transport mpm)
   core::Field pressureForce, pressure;                      // PressureForce
-  core::Field lagrangianMomentum, couplingWork;             // LagrangianMomentum
+  core::Field lagrangianMomentum, couplingWork, volumeChange;  // LagrangianMomentum
   core::Field exchangeMomentum, exchangeEnergy;             // ExchangeIncrements
 
   SolidExchangeFields(int m, const std::string& n, const core::Box& owned);

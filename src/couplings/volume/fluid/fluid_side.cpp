@@ -23,7 +23,10 @@ void FluidSide::consumeAProduceB(double dt) {
 }
 
 void FluidSide::consumeCProduceD() {
-  for (auto& f : fields_) ice_.setExternalCouplingWork(f.material, all(f.couplingWork));
+  for (auto& f : fields_) {
+    ice_.setExternalCouplingWork(f.material, all(f.couplingWork));
+    ice_.setExternalVolumeChange(f.material, all(f.volumeChange));
+  }
   ice_.computeSourcesAndLagrangian();
   for (auto& f : fields_) ice_.setExternalLagrangianMomentum(f.material, all(f.lagrangianMomentum));
   ice_.exchange();

@@ -32,7 +32,7 @@ void SolidSide::consumeBProduceC() {
   mpm_.updateGrid();
   for (auto& f : fields_) {
     cells.cellLagrangianMomentum(f.material, f.lagrangianMomentum);
-    cells.cellCouplingWork(f.material, f.couplingWork, mpm_.stepSize());
+    cells.cellCouplingWork(f.material, f.couplingWork, mpm_.stepSize(), &f.volumeChange);
   }
 }
 
