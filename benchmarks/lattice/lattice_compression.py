@@ -27,6 +27,14 @@ lattice_filled_summary.csv and lattice_filled_stress_strain.png.
 
     scripts/python benchmarks/lattice/lattice_compression.py --study filled --build build --out output/lattice_filled
 
+--study size: the specimen's size, n cells per edge (--per-edge, default 2,4,8; 2 is the shipped
+scenes), still a quarter by the two mirror planes (n/2 x n/2 cells, the central walls halved on
+the planes), the plate at the shipped 1000 1/s over the specimen's height n/2 x a, n/2 mm wider than it, n/2 x
+1.5 mm of room beside the specimen (n = 2: the shipped scene); stress = plate force / (n/2 a), strain = travel / (n/2 a).
+Writes lattice_size_stress_strain.csv, lattice_size_summary.csv and lattice_size_stress_strain.png.
+
+    scripts/python benchmarks/lattice/lattice_compression.py --study size --build build --out output/lattice_size
+
 --study 3d: the slides' cell itself (configs/lattice/lattice3d_a45.yaml: a cube of edge a with three
 orthogonal pores of diameter d, an eighth of a 2 x 2 x 2 specimen by three mirror planes), for each
 --cells value of a (4.5, 4.0, 3.5 mm: the a = 4.0 and 3.5 mm scenes are the a = 4.5 mm one with the
@@ -44,6 +52,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 import h5py
 import numpy as np
@@ -232,16 +241,22 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None):
 
 
 def run_all(jobs, commands):
-    """Runs (argv, cwd, log) jobs at most `jobs` at a time; stops on the first failure."""
+    """Runs (argv, cwd, log) jobs at most `jobs` at a time, the next one as soon as any ends; a
+    run that stops is reported (its curve is kept up to the stop) and the others go on."""
     pending, running = list(commands), []
     while pending or running:
         while pending and len(running) < jobs:
             argv, cwd, log = pending.pop(0)
             running.append((subprocess.Popen(argv, cwd=cwd, stdout=open(log, "w"), stderr=subprocess.STDOUT), log))
-        proc, log = running.pop(0)
-        if proc.wait() != 0:   # the curve is kept up to the stop; the message is printed
-            lines = [l for l in open(log).read().splitlines() if l and not l.startswith("step ")]
-            print(f"{' '.join(proc.args)} stopped ({proc.returncode}): " + " / ".join(lines[1:3])[:600])
+        done = [(p, log) for p, log in running if p.poll() is not None]
+        if not done:
+            time.sleep(0.5)
+            continue
+        for proc, log in done:
+            running.remove((proc, log))
+            if proc.returncode != 0:
+                lines = [l for l in open(log).read().splitlines() if l and not l.startswith("step ")]
+                print(f"{' '.join(proc.args)} stopped ({proc.returncode}): " + " / ".join(lines[1:3])[:600])
 
 
 def filled_study(args):
@@ -313,6 +328,91 @@ def filled_study(args):
     gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
           f"set xlabel 'nominal strain'; set ylabel 'nominal stress across the mid-plane [MPa]'; set grid;"
           f"set title 'open-cell lattices, {args.rate:g} 1/s, mesh {args.mesh * 1e3:g} mm'; set key top left; plot {plots}")
+    gnuplot(gp, png)
+
+
+def size_scene(config, a, n):
+    """The shipped scene with n cells per edge: its quarter holds n/2 x n/2 cells."""
+    s = yaml.safe_load(open(os.path.join(ROOT, config)))
+    k = n // 2
+    lattice = next(g for g in s["geometry"] if g["name"] == "lattice")
+    plate = next(g for g in s["geometry"] if g["name"] == "plate")
+    half = lattice["shape"]["shapes"][1]["lo"][0]               # t/2: the half wall's thickness
+    rate = -plate["velocity"][1] / a                             # the shipped nominal strain rate
+    side, room = k * a, k * 1.5e-3
+    s["scene"] = f"{s['scene']}_n{n}"
+    s["description"] = f"Open-cell square lattice a = {a * 1e3:.1f} mm, {n} x {n} cells (a quarter by symmetry), {rate:g} 1/s"
+    r = lambda x: round(x, 10)  # noqa: E731 (no float dust in the scene file)
+    s["mesh"]["upper"] = [r(side + room), r(side + 1.0e-3)]
+    lattice["shape"]["shapes"] = [{"type": "box", "lo": [0.0, 0.0], "hi": [r(side), r(side)]}] + [
+        {"type": "box", "lo": [r(i * a + half), r(j * a + half)], "hi": [r((i + 1) * a - half), r((j + 1) * a - half)]}
+        for j in range(k) for i in range(k)]
+    plate["shape"] = {"type": "box", "lo": [0.0, r(side)], "hi": [r(side + k * 1.0e-3), r(side + 0.5e-3)]}
+    plate["velocity"] = [0.0, -rate * side]
+    s["output"]["directory"] = s["scene"]
+    return s
+
+
+def size_study(args):
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    exe = os.path.join(os.path.abspath(args.build), "mpm_solver", "mpm_solver")
+    cases, commands = [], []
+    for config, a, rho in SCENES:
+        for n in [int(v) for v in args.per_edge.split(",")]:
+            if n < 2 or n % 2:
+                sys.exit(f"--per-edge: {n} is not an even number of cells of at least 2")
+            s = size_scene(config, a, n)
+            path = os.path.join(out, s["scene"] + ".yaml")
+            yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
+            log = os.path.join(out, s["scene"] + ".log")
+            cases.append((s["scene"], a, rho, n, os.path.join(out, s["output"]["directory"]), log))
+            commands.append(([exe, path], out, log))
+    if not args.skip_run:
+        run_all(args.jobs, commands)
+    rows, summary = [], []
+    for name, a, rho, n, directory, log in cases:
+        if not glob.glob(os.path.join(directory, "*.h5")):
+            print(f"{name}: no outputs in {directory}, left out")
+            continue
+        side = n // 2 * a
+        travel, force, vol0 = curve(directory, name)
+        strain, stress = travel / side, force / side
+        plateau, e_d, w_d = summarize(strain, stress)
+        steps, wall, _, particles = parse_log(open(log).read())
+        rows += [(name, a, n, e, st) for e, st in zip(strain, stress)]
+        summary.append({"scene": name, "a_mm": a * 1e3, "cells_per_edge": n, "rho_rel_particles": vol0 / side ** 2,
+                        "first_yield_MPa": band_mean(strain, stress, 0.04, 0.12) / 1e6,
+                        "plateau_MPa": plateau / 1e6,
+                        "plateau_rise_40_over_10": band_mean(strain, stress, 0.38, 0.42) / band_mean(strain, stress, 0.08, 0.12),
+                        "densification_strain": e_d, "absorbed_MJ_per_m3": w_d / 1e6, "end_strain": float(strain[-1]),
+                        "particles": particles, "steps": steps, "wall_s": wall})
+    with open(os.path.join(out, "lattice_size_stress_strain.csv"), "w") as f:
+        f.write("scene,a_mm,cells_per_edge,strain,stress_MPa\n")
+        for name, a, n, e, st in rows:
+            f.write(f"{name},{a * 1e3:.1f},{n},{e:.6f},{st / 1e6:.6f}\n")
+    keys = list(summary[0].keys())
+    with open(os.path.join(out, "lattice_size_summary.csv"), "w") as f:
+        f.write(",".join(keys) + "\n")
+        for r in summary:
+            f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
+    for r in summary:
+        print(f"{r['scene']}: a {r['a_mm']:.1f} mm, {r['cells_per_edge']} per edge, rho* {r['rho_rel_particles']:.3f}  "
+              f"first yield {r['first_yield_MPa']:.3f} MPa  plateau {r['plateau_MPa']:.3f} MPa (40 % / 10 %: "
+              f"{r['plateau_rise_40_over_10']:.2f})  densification {r['densification_strain']:.3f}  absorbed "
+              f"{r['absorbed_MJ_per_m3']:.3f} MJ/m^3  end strain {r['end_strain']:.3f}  {r['particles']} particles, "
+              f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
+    png = os.path.join(out, "lattice_size_stress_strain.png")
+    csv = os.path.join(out, "lattice_size_stress_strain.csv")
+    colours = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}
+    dashes = {2: 1, 4: 2, 8: 3}
+    plots = ", ".join(
+        f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dashes.get(r['cells_per_edge'], 4)} "
+        f"lc rgb '{colours.get(round(r['a_mm'], 1), 'black')}' title 'a = {r['a_mm']:.1f} mm, "
+        f"{r['cells_per_edge']} per edge'" for r in summary)
+    gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
+          "set xlabel 'nominal strain'; set ylabel 'nominal stress [MPa] (plate force / specimen width)'; set grid;"
+          f"set title 'square lattices, n cells per edge (quarter models), 1000 1/s'; set key top left; plot {plots}")
     gnuplot(gp, png)
 
 
@@ -424,7 +524,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--out", default="output/lattice")
     ap.add_argument("--skip-run", action="store_true", help="read the existing outputs")
-    ap.add_argument("--study", choices=["closed", "filled", "3d"], default="closed",
+    ap.add_argument("--study", choices=["closed", "filled", "3d", "size"], default="closed",
                     help="closed: the shipped scenes; filled: open-cell variants, empty and filled")
     ap.add_argument("--mesh", type=float, default=1.5e-4, help="filled study: mesh spacing [m]")
     ap.add_argument("--rate", type=float, default=2000.0, help="filled study: nominal strain rate [1/s]")
@@ -439,7 +539,10 @@ def main():
     ap.add_argument("--end-strain", type=float, default=0.7, help="3d study: nominal strain at the end")
     ap.add_argument("--compare2d", default=os.path.join(ROOT, "docs", "lattice_summary.csv"),
                     help="3d study: the 2D summary to compare with")
+    ap.add_argument("--per-edge", default="2,4,8", help="size study: cells per edge of the specimen (even)")
     args = ap.parse_args()
+    if args.study == "size":
+        return size_study(args)
     if args.study == "filled":
         return filled_study(args)
     if args.study == "3d":
