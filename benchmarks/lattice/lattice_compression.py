@@ -240,6 +240,18 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None):
     return s
 
 
+COLOURS = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}  # the plots' colour per cell edge a [mm]
+
+
+def write_summary(path, summary):
+    """One row per run: the dicts' keys as the header, floats to 6 digits."""
+    keys = list(summary[0].keys())
+    with open(path, "w") as f:
+        f.write(",".join(keys) + "\n")
+        for r in summary:
+            f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
+
+
 def run_all(jobs, commands):
     """Runs (argv, cwd, log) jobs at most `jobs` at a time, the next one as soon as any ends; a
     run that stops is reported (its curve is kept up to the stop) and the others go on."""
@@ -306,11 +318,7 @@ def filled_study(args):
         f.write("scene,a_mm,viscosity_Pa_s,strain,stress_MPa,plate_stress_MPa\n")
         for name, a, mu, e, st, sp in rows:
             f.write(f"{name},{a * 1e3:.1f},{0 if mu is None else mu:g},{e:.6f},{st / 1e6:.6f},{sp / 1e6:.6f}\n")
-    keys = list(summary[0].keys())
-    with open(os.path.join(out, "lattice_filled_summary.csv"), "w") as f:
-        f.write(",".join(keys) + "\n")
-        for r in summary:
-            f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
+    write_summary(os.path.join(out, "lattice_filled_summary.csv"), summary)
     for r in summary:
         print(f"{r['scene']}: rho* {r['rho_rel_particles']:.3f}  first yield {r['first_yield_MPa']:.3f} MPa  plateau "
               f"{r['plateau_MPa']:.3f} MPa (x{r['plateau_over_empty']:.3f} of empty)  densification "
@@ -319,7 +327,7 @@ def filled_study(args):
               f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
     png = os.path.join(out, "lattice_filled_stress_strain.png")
     csv = os.path.join(out, "lattice_filled_stress_strain.csv")
-    colours = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}
+    colours = COLOURS
     dashes = {0.0: 1, viscosities[0]: 2}
     plots = ", ".join(
         f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dashes.get(r['viscosity_Pa_s'], 3)} "
@@ -391,11 +399,7 @@ def size_study(args):
         f.write("scene,a_mm,cells_per_edge,strain,stress_MPa\n")
         for name, a, n, e, st in rows:
             f.write(f"{name},{a * 1e3:.1f},{n},{e:.6f},{st / 1e6:.6f}\n")
-    keys = list(summary[0].keys())
-    with open(os.path.join(out, "lattice_size_summary.csv"), "w") as f:
-        f.write(",".join(keys) + "\n")
-        for r in summary:
-            f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
+    write_summary(os.path.join(out, "lattice_size_summary.csv"), summary)
     for r in summary:
         print(f"{r['scene']}: a {r['a_mm']:.1f} mm, {r['cells_per_edge']} per edge, rho* {r['rho_rel_particles']:.3f}  "
               f"first yield {r['first_yield_MPa']:.3f} MPa  plateau {r['plateau_MPa']:.3f} MPa (40 % / 10 %: "
@@ -404,7 +408,7 @@ def size_study(args):
               f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
     png = os.path.join(out, "lattice_size_stress_strain.png")
     csv = os.path.join(out, "lattice_size_stress_strain.csv")
-    colours = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}
+    colours = COLOURS
     dashes = {2: 1, 4: 2, 8: 3}
     plots = ", ".join(
         f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dashes.get(r['cells_per_edge'], 4)} "
