@@ -8,7 +8,9 @@
 // the work its own solver says the pressure forces did on it: setExternalCouplingWork) is a
 // truncation error; it is given to the materials in proportion to theta_r kappa_r (fluids alone)
 // or to their heat capacities m_r cv_r (a cell with a solid), an external material's share as
-// energy to its solver (dEnergy, with the exchange heat). So closed boxes keep
+// energy to its solver (dEnergy, with the exchange heat); where the solid's own volume change is
+// given (setExternalVolumeChange), the p dV work of its difference from the solid's theta-kappa
+// share goes to the fluids first (below). So closed boxes keep
 // their total energy to round-off, with solids or without. Energy sources add
 // power * theta * V * dt to their material.
 #include <algorithm>
