@@ -464,21 +464,38 @@ void IceSolver::fitFluidsToExternalVolume() {
   forEach(owned_, [&](int i, int j, int k) {
     // Fluids at the scene's initial pressure of the cell (their micro density from the EOS).
     const double p0 = initialPressure_(i, j, k);
-    double vext = 0, vfluid = 0;
+    // In a cell whose centre lies in a solid object, every fluid starts as a trace of the same
+    // volume fraction (initial_state.cpp); the fluids of the region the solid sits in fill what the
+    // solid leaves free, the others stay traces. Scaling every trace alike gave each fluid an equal
+    // share: in the filled lattices the buffer gas meant for above the plate took half of the
+    // free volume in the polymer's surface cells (docs/slides.md, "Filled lattices").
+    const std::uint32_t held = solidCellFluids_.empty() ? 0u : solidCellFluids_[static_cast<std::size_t>(owned_.index(i, j, k))];
+    double vext = 0, vfluid = 0, vheld = 0;
+    int r = 0;
     for (const MaterialState& m : st_.mat) {
+      const bool isHeld = (held >> r++) & 1u;
       if (m.external) {
         vext += m.mass(i, j, k) * m.spvol(i, j, k);
         continue;
       }
       const double rho = m.eos->density(p0, m.eint(i, j, k));
-      if (rho > 0) vfluid += m.mass(i, j, k) / rho;
+      if (rho > 0) (isHeld ? vheld : vfluid) += m.mass(i, j, k) / rho;
     }
-    if (!(vfluid > 0)) return;
     const double vfree = std::max(V - vext, (1.0 - kMaxSolidFraction) * V);
+    if (vheld > 0 && vfree > vfluid) {  // the region's fluids fill; the other traces keep their volume
+      const double scale = (vfree - vfluid) / vheld;
+      r = 0;
+      for (MaterialState& m : st_.mat)
+        if ((held >> r++) & 1u) m.mass(i, j, k) *= scale;
+      return;
+    }
+    vfluid += vheld;
+    if (!(vfluid > 0)) return;
     const double scale = vfree / vfluid;
     for (MaterialState& m : st_.mat)
       if (!m.external) m.mass(i, j, k) *= scale;
   });
+  solidCellFluids_ = {};
   fillMaterialGhosts(false);
 }
 

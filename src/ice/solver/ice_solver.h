@@ -18,6 +18,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "ice/boundary/ice_boundary.h"
@@ -283,6 +284,10 @@ class IceSolver {
   std::vector<SoundSpeedViolation> soundBad_;  // soundSpeedViolations(): finishEquilibrium's
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start only)
+  /// Coupled start only, per owned cell whose centre lies in a solid object inside a fluid region:
+  /// the fluids that region holds (bit r), which fitFluidsToExternalVolume lets fill the volume
+  /// the solid leaves free (0 elsewhere: every fluid scaled alike).
+  std::vector<std::uint32_t> solidCellFluids_;
   SemiImplicitScratch semi_;
   HeldShares held_;
   // The equilibrium phase's scratch (kept from step to step: no allocation per step): the EOS

@@ -20,7 +20,10 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   owned_ = decomp_.cellBox(comm_.rank());
   const core::Box stored = decomp_.storedBox(comm_.rank(), core::Centering::Cell, kGhost);
   ghosts_ = std::make_unique<core::GhostExchange>(decomp_, comm_, core::Centering::Cell, kGhost);
-  if (coupledStart) initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
+  if (coupledStart) {
+    initialPressure_ = core::Field("initial_pressure", core::Centering::Cell, owned_, 1, 0);
+    solidCellFluids_.assign(static_cast<std::size_t>(owned_.numPts()), 0u);
+  }
 
   // ---- options
   const core::IceOptions& o = scene.ice;
@@ -153,7 +156,13 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
       double frac = inSolid ? kTraceFraction : 0.0, rho = bg[r].rho, e = bg[r].e;
       if (reg)
         for (const core::FillSpec& f : reg->fill)
-          if (f.material == m.name && !inSolid) {
+          if (f.material == m.name) {
+            if (inSolid) {  // the region's fluid, at its state: it fills the solid's free volume
+              if (coupledStart && f.volume_fraction > 0)
+                solidCellFluids_[static_cast<std::size_t>(owned_.index(i, j, k))] |= 1u << r;
+              resolveState(*m.eos, *reg->pressure, reg->temperature, reg->density, &rho, &e);
+              continue;
+            }
             frac = f.volume_fraction;
             resolveState(*m.eos, *reg->pressure, reg->temperature, reg->density, &rho, &e);
           }
