@@ -252,6 +252,20 @@ def write_summary(path, summary):
             f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
 
 
+def plot_curves(stem, summary, dash, label, ylabel, title):
+    """<stem>.png from <stem>.csv (columns 4 and 5: strain, stress): a line per summary row, coloured
+    by the cell edge, dashed by dash(row), titled 'a = .. mm, ' + label(row)."""
+    png, csv = stem + ".png", stem + ".csv"
+    plots = ", ".join(
+        f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dash(r)} "
+        f"lc rgb '{COLOURS.get(round(r['a_mm'], 1), 'black')}' title 'a = {r['a_mm']:.1f} mm, {label(r)}'"
+        for r in summary)
+    gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
+          f"set xlabel 'nominal strain'; set ylabel '{ylabel}'; set grid;"
+          f"set title '{title}'; set key top left; plot {plots}")
+    gnuplot(gp, png)
+
+
 def run_all(jobs, commands):
     """Runs (argv, cwd, log) jobs at most `jobs` at a time, the next one as soon as any ends; a
     run that stops is reported (its curve is kept up to the stop) and the others go on."""
@@ -325,18 +339,12 @@ def filled_study(args):
               f"{r['densification_strain']:.3f}  absorbed {r['absorbed_MJ_per_m3']:.3f} MJ/m^3, to 50 % "
               f"{r['absorbed_to_50pct_MJ_per_m3']:.3f} (x{r['absorbed_50_over_empty']:.3f})  {r['particles']} particles, "
               f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
-    png = os.path.join(out, "lattice_filled_stress_strain.png")
-    csv = os.path.join(out, "lattice_filled_stress_strain.csv")
-    colours = COLOURS
     dashes = {0.0: 1, viscosities[0]: 2}
-    plots = ", ".join(
-        f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dashes.get(r['viscosity_Pa_s'], 3)} "
-        f"lc rgb '{colours.get(round(r['a_mm'], 1), 'black')}' title 'a = {r['a_mm']:.1f} mm, "
-        + ("empty" if not r["filled"] else f"filled {r['viscosity_Pa_s']:g} Pa s") + "'" for r in summary)
-    gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
-          f"set xlabel 'nominal strain'; set ylabel 'nominal stress across the mid-plane [MPa]'; set grid;"
-          f"set title 'open-cell lattices, {args.rate:g} 1/s, mesh {args.mesh * 1e3:g} mm'; set key top left; plot {plots}")
-    gnuplot(gp, png)
+    plot_curves(os.path.join(out, "lattice_filled_stress_strain"), summary,
+                lambda r: dashes.get(r["viscosity_Pa_s"], 3),
+                lambda r: "empty" if not r["filled"] else f"filled {r['viscosity_Pa_s']:g} Pa s",
+                "nominal stress across the mid-plane [MPa]",
+                f"open-cell lattices, {args.rate:g} 1/s, mesh {args.mesh * 1e3:g} mm")
 
 
 def size_scene(config, a, n):
@@ -406,18 +414,11 @@ def size_study(args):
               f"{r['plateau_rise_40_over_10']:.2f})  densification {r['densification_strain']:.3f}  absorbed "
               f"{r['absorbed_MJ_per_m3']:.3f} MJ/m^3  end strain {r['end_strain']:.3f}  {r['particles']} particles, "
               f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
-    png = os.path.join(out, "lattice_size_stress_strain.png")
-    csv = os.path.join(out, "lattice_size_stress_strain.csv")
-    colours = COLOURS
     dashes = {2: 1, 4: 2, 8: 3}
-    plots = ", ".join(
-        f"'< grep ^{r['scene']}, {csv}' using 4:5 with lines lw 2 dt {dashes.get(r['cells_per_edge'], 4)} "
-        f"lc rgb '{colours.get(round(r['a_mm'], 1), 'black')}' title 'a = {r['a_mm']:.1f} mm, "
-        f"{r['cells_per_edge']} per edge'" for r in summary)
-    gp = (f"set terminal pngcairo size 1000,650; set output '{png}'; set datafile separator ',';"
-          "set xlabel 'nominal strain'; set ylabel 'nominal stress [MPa] (plate force / specimen width)'; set grid;"
-          f"set title 'square lattices, n cells per edge (quarter models), 1000 1/s'; set key top left; plot {plots}")
-    gnuplot(gp, png)
+    plot_curves(os.path.join(out, "lattice_size_stress_strain"), summary,
+                lambda r: dashes.get(r["cells_per_edge"], 4), lambda r: f"{r['cells_per_edge']} per edge",
+                "nominal stress [MPa] (plate force / specimen width)",
+                "square lattices, n cells per edge (quarter models), 1000 1/s")
 
 
 def scene_3d(a, h, rate, end_strain):
@@ -507,7 +508,7 @@ def study_3d(args):
     png = os.path.join(out, "lattice3d_stress_strain.png")
     csv3 = os.path.join(out, "lattice3d_stress_strain.csv")
     csv2 = os.path.join(os.path.dirname(args.compare2d), "lattice_stress_strain.csv")
-    colours = {4.5: "#1f77b4", 4.0: "#d62728", 3.5: "#2ca02c"}
+    colours = COLOURS
     plots = []
     for r in summary:
         a, c = round(r["a_mm"], 1), colours.get(round(r["a_mm"], 1), "black")

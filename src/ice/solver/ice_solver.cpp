@@ -470,30 +470,24 @@ void IceSolver::fitFluidsToExternalVolume() {
     // share: in the filled lattices the buffer gas meant for above the plate took half of the
     // free volume in the polymer's surface cells (docs/slides.md, "Filled lattices").
     const std::uint32_t held = solidCellFluids_.empty() ? 0u : solidCellFluids_[static_cast<std::size_t>(owned_.index(i, j, k))];
-    double vext = 0, vfluid = 0, vheld = 0;
-    int r = 0;
-    for (const MaterialState& m : st_.mat) {
-      const bool isHeld = (held >> r++) & 1u;
+    const int nm = numMaterials();
+    double vext = 0, vheld = 0, vother = 0;  // the solids' volume; the fluids', the region's and the others'
+    for (int r = 0; r < nm; ++r) {
+      const MaterialState& m = st_.mat[r];
       if (m.external) {
         vext += m.mass(i, j, k) * m.spvol(i, j, k);
         continue;
       }
       const double rho = m.eos->density(p0, m.eint(i, j, k));
-      if (rho > 0) (isHeld ? vheld : vfluid) += m.mass(i, j, k) / rho;
+      if (rho > 0) ((held >> r) & 1u ? vheld : vother) += m.mass(i, j, k) / rho;
     }
+    if (!(vheld + vother > 0)) return;
     const double vfree = std::max(V - vext, (1.0 - kMaxSolidFraction) * V);
-    if (vheld > 0 && vfree > vfluid) {  // the region's fluids fill; the other traces keep their volume
-      const double scale = (vfree - vfluid) / vheld;
-      r = 0;
-      for (MaterialState& m : st_.mat)
-        if ((held >> r++) & 1u) m.mass(i, j, k) *= scale;
-      return;
-    }
-    vfluid += vheld;
-    if (!(vfluid > 0)) return;
-    const double scale = vfree / vfluid;
-    for (MaterialState& m : st_.mat)
-      if (!m.external) m.mass(i, j, k) *= scale;
+    // The region's fluids fill what the other traces leave; without them every fluid is scaled alike.
+    const bool regionFills = vheld > 0 && vfree > vother;
+    const double scale = regionFills ? (vfree - vother) / vheld : vfree / (vheld + vother);
+    for (int r = 0; r < nm; ++r)
+      if (!st_.mat[r].external && (!regionFills || ((held >> r) & 1u))) st_.mat[r].mass(i, j, k) *= scale;
   });
   solidCellFluids_ = {};
   fillMaterialGhosts(false);
@@ -522,22 +516,26 @@ void IceSolver::setExternalLagrangianEnergy(int material, std::span<const double
   });
 }
 
+namespace {
+// One value per owned cell of an external material's input (setExternalCouplingWork and
+// setExternalVolumeChange): checks that the material is external and the size, then copies.
+void setOwnedValues(MaterialState& m, core::Field& f, std::span<const double> values, const core::Box& owned,
+                    const char* what) {
+  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
+  if (values.size() != static_cast<std::size_t>(owned.numPts()))
+    throw std::invalid_argument(std::string("ice: external ") + what + " has the wrong size");
+  forEach(owned, [&](int i, int j, int k) { f(i, j, k) = values[static_cast<std::size_t>(owned.index(i, j, k))]; });
+}
+}  // namespace
+
 void IceSolver::setExternalCouplingWork(int material, std::span<const double> work) {
   MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
-  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
-  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
-  if (work.size() != n) throw std::invalid_argument("ice: external coupling work has the wrong size");
-  forEach(owned_, [&](int i, int j, int k) { m.couplingWork(i, j, k) = work[static_cast<std::size_t>(owned_.index(i, j, k))]; });
+  setOwnedValues(m, m.couplingWork, work, owned_, "coupling work");
 }
 
 void IceSolver::setExternalVolumeChange(int material, std::span<const double> volumeChange) {
   MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
-  if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
-  const std::size_t n = static_cast<std::size_t>(owned_.numPts());
-  if (volumeChange.size() != n) throw std::invalid_argument("ice: external volume change has the wrong size");
-  forEach(owned_, [&](int i, int j, int k) {
-    m.volumeChange(i, j, k) = volumeChange[static_cast<std::size_t>(owned_.index(i, j, k))];
-  });
+  setOwnedValues(m, m.volumeChange, volumeChange, owned_, "volume change");
   m.volumeChangeGiven = true;
 }
 

@@ -271,6 +271,20 @@ TEST(IceExternal, TheSolidsOwnVolumeChangeIsWorkOfTheFluidsThatFillTheRest) {
   EXPECT_LT(std::abs(total), 1e-12 * scale);
 }
 
+namespace {
+// Steel (external material `material`, 8900 kg/m^3, at rest at 300 K) filling share(i) of each
+// owned cell i, as the coupler's solid side hands it over.
+template <class Share>
+void placeSteel(ice::IceSolver& sol, int material, Share share) {
+  const auto& owned = sol.ownedBox();
+  const std::size_t n = static_cast<std::size_t>(owned.numPts());
+  const double V = sol.mesh().cellVolume(), v0 = 1.0 / 8900.0;
+  std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
+  core::forEach(owned, [&](int i, int j, int k) { mass[static_cast<std::size_t>(owned.index(i, j, k))] = share(i) * V / v0; });
+  sol.setExternalMaterialState(material, mass, vel, T, sv);
+}
+}  // namespace
+
 // Solids smeared over cells by the node-to-cell average: a cell may receive more solid mass than
 // fits (m v0 > V). The equilibrium clips the solid to the cell, so the pressure stays the solid's
 // own (p_ref at its reference specific volume) instead of compressing it by the overfill (GPa).
@@ -285,27 +299,17 @@ TEST(IceExternal, OverfullSolidCellsKeepTheSolidPressureAndFluidsFitTheFreeVolum
   s.materials = {test::idealGas("air"), steel};
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 101325, 1.2)};
   ice::IceSolver sol(s, test::comm());
-  const auto& owned = sol.ownedBox();
-  const std::size_t n = static_cast<std::size_t>(owned.numPts());
-  const double V = sol.mesh().cellVolume();
-  const double v0 = 1.0 / 8900.0;
-  std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
-  std::vector<double> share(n, 0.0);  // solid volume / cell volume per cell
-  core::forEach(owned, [&](int i, int j, int k) {
-    const auto q = static_cast<std::size_t>(owned.index(i, j, k));
-    share[q] = i == 4 ? 1.3 : i == 5 ? 0.5 : 0.0;  // cell 4 overfilled, cell 5 half covered
-    mass[q] = share[q] * V / v0;
-  });
-  sol.setExternalMaterialState(1, mass, vel, T, sv);
+  // Solid volume / cell volume per cell: cell 4 overfilled, cell 5 half covered.
+  auto share = [](int i) { return i == 4 ? 1.3 : i == 5 ? 0.5 : 0.0; };
+  placeSteel(sol, 1, share);
   sol.fitFluidsToExternalVolume();
   sol.computeEquilibriumPressure();
-  core::forEach(owned, [&](int i, int j, int k) {
-    const auto q = static_cast<std::size_t>(owned.index(i, j, k));
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
     // Cell 4: the solid's own pressure at v0 (p_ref) up to the trace of air it squeezes;
     // cell 5 and the open cells: the scene's pressure, the air having been fitted.
-    EXPECT_NEAR(sol.pressure()(i, j, k), 101325.0, 1e-3 * 101325.0) << "cell " << i << " share " << share[q];
+    EXPECT_NEAR(sol.pressure()(i, j, k), 101325.0, 1e-3 * 101325.0) << "cell " << i << " share " << share(i);
     const double thetaSolid = sol.state().mat[1].theta(i, j, k);
-    EXPECT_NEAR(thetaSolid, std::min(share[q], 1.0), 1e-6) << "cell " << i;
+    EXPECT_NEAR(thetaSolid, std::min(share(i), 1.0), 1e-6) << "cell " << i;
   });
 }
 
@@ -325,19 +329,11 @@ TEST(IceExternal, TheFluidAroundASolidFillsItsFreeVolumeNotEveryFluidAlike) {
                 test::region("water", test::box({0.8, 0, 0}, {1, 1, 1}), {{"water", 1.0}}, 101325, 1000),
                 test::region("block", test::box({0.4, 0, 0}, {0.6, 1, 1}), {{"steel", 1.0}}, 101325, 8900)};
   ice::IceSolver sol(s, test::comm());
-  const auto& owned = sol.ownedBox();
-  const std::size_t n = static_cast<std::size_t>(owned.numPts());
-  const double V = sol.mesh().cellVolume();
-  const double v0 = 1.0 / 8900.0;
-  std::vector<double> mass(n, 0.0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
-  core::forEach(owned, [&](int i, int j, int k) {
-    if (i == 4 || i == 5) mass[static_cast<std::size_t>(owned.index(i, j, k))] = 0.6 * V / v0;
-  });
-  sol.setExternalMaterialState(2, mass, vel, T, sv);
+  placeSteel(sol, 2, [](int i) { return i == 4 || i == 5 ? 0.6 : 0.0; });
   sol.fitFluidsToExternalVolume();
   sol.computeEquilibriumPressure();
   const auto& st = sol.state();
-  core::forEach(owned, [&](int i, int j, int k) {
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
     const double air = st.mat[0].theta(i, j, k), water = st.mat[1].theta(i, j, k);
     if (i == 4 || i == 5) {
       EXPECT_NEAR(air, 0.4, 1e-4) << "cell " << i;
