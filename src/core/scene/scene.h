@@ -124,6 +124,11 @@ struct RegionSpec {
 
 enum class BoundaryType { Symmetry, SlipWall, NoSlipWall, Inflow, Outflow, Periodic, Free };
 
+/// A face matter may leave through freely (free, outflow): ICE fills its ghosts with zero gradient,
+/// MPM leaves its nodes alone, and a solid reaching it continues beyond it as far as the coupling is
+/// concerned.
+inline bool isOpenBoundary(BoundaryType t) { return t == BoundaryType::Free || t == BoundaryType::Outflow; }
+
 /// Boundary condition of one mesh face ("x-", "x+", "y-", ...).
 struct BoundarySpec {
   BoundaryType type = BoundaryType::Symmetry;

@@ -14,7 +14,7 @@ namespace {
 constexpr double kCoverTolerance = 1e-9;  // relative, of the face cover comparisons
 }  // namespace
 
-void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& owned) {
+void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& owned, const IceBoundary& bc) {
   SolidFaces& sf = st.solidFaces;
   const int dim = mesh.dim();
   const core::Box domain = mesh.cellBox();
@@ -27,20 +27,37 @@ void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& ow
       sf.flux[d] = core::Field("solid_face_flux", core::Centering::Cell, fb, 1, 0);
       sf.inside[d] = core::Field("solid_face_inside", core::Centering::Cell, fb, 1, 0);
     }
-    // Cover and volume flux of the low face of stored cell (i, j, k) in d (0 on the domain's
-    // boundary faces and beyond them). The external materials with a face transport, as flat
-    // arrays over the stored box (every cell field of the state is stored over it).
+    // Cover and volume flux of the low face of stored cell (i, j, k) in d (on an open boundary
+    // face the boundary cell's solid, 0 on the other boundary faces and beyond them). The external
+    // materials with a face transport, as flat arrays over the stored box (every cell field of the
+    // state is stored over it).
     struct Ext {
-      const double *m, *v, *D, *F;
+      const double *m, *v, *D, *F, *u;
     };
     std::vector<Ext> ext;
     for (const MaterialState& m : st.mat)
       if (m.external && m.faceDensity.npts() != 0)
-        ext.push_back({m.mass.data(), m.spvol.data(), m.faceDensity.data(d), m.faceFlux.data(d)});
+        ext.push_back({m.mass.data(), m.spvol.data(), m.faceDensity.data(d), m.faceFlux.data(d), m.vel.data(d)});
+    const bool openLo = core::isOpenBoundary(bc.type(2 * d)), openHi = core::isOpenBoundary(bc.type(2 * d + 1));
+    const double V = mesh.cellVolume();
     const std::int64_t sd = d == 0 ? 1 : (d == 1 ? sb.length(0) : std::int64_t(sb.length(0)) * sb.length(1));
     auto faceValues = [&](int i, int j, int k, double& cover, double& flux) {
       cover = flux = 0;
       const int idx[3] = {i, j, k};
+      const bool atLo = idx[d] == domain.lo[d] && openLo, atHi = idx[d] == domain.hi[d] + 1 && openHi;
+      if (atLo || atHi) {  // the boundary cell's solid, continued beyond the face
+        int in[3] = {i, j, k};
+        if (atHi) in[d] -= 1;
+        if (!sb.contains(in[0], in[1], in[2])) return;
+        const std::int64_t c = sb.index(in[0], in[1], in[2]);
+        for (const Ext& e : ext) {
+          const double th = e.m[c] * e.v[c] / V;
+          cover += th;
+          flux += th * e.u[c];
+        }
+        cover = std::clamp(cover, 0.0, kMaxSolidFraction);
+        return;
+      }
       if (idx[d] <= domain.lo[d] || idx[d] > domain.hi[d]) return;
       int l[3] = {i, j, k};
       l[d] -= 1;

@@ -21,14 +21,18 @@
 
 #include "core/mesh/box.h"
 #include "core/mesh/mesh.h"
+#include "ice/boundary/ice_boundary.h"
 #include "ice/state/ice_state.h"
 
 namespace mpmice::ice {
 
 /// Fills st.solidFaces (cover, flux, inside) on the faces of `owned` from every external
-/// material's faceDensity / faceFlux (ghosts filled) and its mass and specific volume. Faces on
-/// the domain's boundary carry no solid.
-void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& owned);
+/// material's faceDensity / faceFlux (ghosts filled) and its mass and specific volume. On an open
+/// boundary face (free, outflow) the solid continues beyond the mesh as ICE's zero-gradient ghosts
+/// and MPM's images continue it: the face carries the boundary cell's solid, cover sum_s m_s v_s / V
+/// and flux sum_s m_s v_s u_s,d / V (its volume fraction moving with its velocity). The other
+/// boundary faces (walls, symmetry planes, inflow) carry no solid.
+void computeSolidFaces(IceState& st, const core::Mesh& mesh, const core::Box& owned, const IceBoundary& bc);
 
 /// At face `fi` (index in owned.faces(d)) with the face transport on: zeroes the face volume
 /// fraction of every external material where the face is not inside a solid (the momentum

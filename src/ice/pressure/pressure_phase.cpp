@@ -224,7 +224,7 @@ void IceSolver::finishEquilibrium(const std::vector<std::pair<int, std::int64_t>
   });
 
   fillMaterialGhosts(false);
-  if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_);
+  if (st_.solidFaces.on) computeSolidFaces(st_, mesh_, owned_, bc_);
 }
 
 void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned) {

@@ -60,12 +60,6 @@ inline std::array<int, 3> cellOfParticle(const core::Mesh& mesh, const ParticleS
   return c;
 }
 
-/// A mesh face the solid may cross as far as ICE is concerned: free and outflow (ICE fills their
-/// ghost cells with zero gradient; MPM leaves their nodes alone).
-inline bool openFace(core::BoundaryType t) {
-  return t == core::BoundaryType::Free || t == core::BoundaryType::Outflow;
-}
-
 /// The open faces of the mesh, per direction.
 struct OpenFaces {
   std::array<bool, 3> low{false, false, false}, high{false, false, false};
@@ -73,8 +67,8 @@ struct OpenFaces {
   OpenFaces() = default;
   OpenFaces(const std::array<core::BoundarySpec, 6>& faces, int dim) {
     for (int d = 0; d < dim; ++d) {
-      low[d] = openFace(faces[2 * d].type);
-      high[d] = openFace(faces[2 * d + 1].type);
+      low[d] = core::isOpenBoundary(faces[2 * d].type);
+      high[d] = core::isOpenBoundary(faces[2 * d + 1].type);
       any = any || low[d] || high[d];
     }
   }
@@ -277,7 +271,7 @@ class NodeCellOperators {
   /// Sums the grid's remap field across ranks and adds its first dim components to externalForce.
   void addRemapToExternalForce();
   /// Per node of the grid's box: bit d set when the node lies at an open mesh face normal to d
-  /// (openFace(): free or outflow, where ICE's ghost cells continue its fields with zero
+  /// (core::isOpenBoundary(): free or outflow, where ICE's ghost cells continue its fields with zero
   /// gradient and MPM leaves the nodes alone): beyond it, on it, or within kImageLayers - 1 node
   /// layers inside it (the nodes whose stencil support crosses the face, B-splines included). The
   /// solid reaching such a face continues beyond it as far as ICE is concerned, so ICE's pressure
