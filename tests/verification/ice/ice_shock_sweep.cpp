@@ -3,7 +3,7 @@
 // solution, the fitted order, the overshoot behind each shock (% of the jump) and the stationary
 // contact's velocity. scripts/ice_shock_sweep.sh runs it for every setting (docs/ice.md).
 //   ice_shock_sweep [--advection A] [--limiter L] [--pressure P] [--face-pressure riemann|average]
-//                   [--equilibrium fixed_energy|with_work] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction]
+//                   [--equilibrium fixed_energy|with_work] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction,water_piston,air_shock]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -52,12 +52,15 @@ int main(int argc, char** argv) {
   std::printf("setting: %s %s %s face_pressure %s equilibrium %s cfl %.2f\n", o.advection.c_str(), o.limiter.c_str(),
               o.pressure.c_str(), o.facePressure.c_str(), o.equilibrium.c_str(), o.cfl);
   std::vector<test::ShockCase> list;
-  // "toro": Sod and Toro 1-5; otherwise the named cases (sod, toro1 .. toro5, water_air, water_rarefaction).
+  // "toro": Sod and Toro 1-5; otherwise the named cases (sod, toro1 .. toro5, water_air, water_rarefaction,
+  // water_piston, air_shock).
   for (const auto& c : test::toroCases())
     if (cases.find("toro,") != std::string::npos || cases == "toro" || ("," + cases + ",").find("," + c.name + ",") != std::string::npos)
       list.push_back(c);
   if (cases.find("water_air") != std::string::npos) list.push_back(test::waterAirRealDensity());
   if (cases.find("water_rarefaction") != std::string::npos) list.push_back(test::waterRarefaction());
+  if (cases.find("water_piston") != std::string::npos) list.push_back(test::waterPiston());
+  if (cases.find("air_shock") != std::string::npos) list.push_back(test::airShock());
   for (const auto& c : list) {
     std::vector<double> err;
     std::vector<int> ns;
