@@ -30,7 +30,14 @@ cell pressure per output: output.probes follow solid particles only). Writes
 underwater_foam_models.csv, underwater_foam_summary.csv and, with gnuplot,
 underwater_foam_models.png into --out.
 
+With --full --tube the scene is configs/underwater_tube_2d.yaml at the shipped depth: the same scene
+with the slides' PVC tube around the charge (and `mpm.stress_work: material` for its fragments),
+the tube kept (--full alone strips it); the scenes are named underwater_foam_full_tube_<model> and
+the CSV and PNG files get a _tube suffix (underwater_foam_summary_tube.csv, ...), so the runs with
+and without the tube can share --out.
+
     scripts/python benchmarks/underwater/foam_models.py --build build --out output/underwater_foam
+    scripts/python benchmarks/underwater/foam_models.py --build build --full --tube --end 1.5e-4 --out output/underwater_tube
 """
 import argparse
 import copy
@@ -48,6 +55,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 SCENE = os.path.join(ROOT, "configs", "underwater_foam_2d.yaml")
 SCENE_3D = os.path.join(ROOT, "configs", "underwater_foam_3d.yaml")
+SCENE_TUBE = os.path.join(ROOT, "configs", "underwater_tube_2d.yaml")
 CHARGE_BOTTOM = 0.238           # [m], the scene's charge box
 FOAM_THICKNESS = 0.03
 FOAM_BOTTOM = 0.148             # the cut's bottom: foam top 6 cm below the charge
@@ -64,7 +72,9 @@ MODELS = ["water", "air", "none"]
 P_AMBIENT = 1.0e5
 
 
-def scene(model, end, full=False, dim=2):
+def scene(model, end, full=False, dim=2, tube=False):
+    if tube and (not full or dim == 3):
+        raise ValueError("tube: only with full in 2D (configs/underwater_tube_2d.yaml at the shipped depth)")
     if dim == 3:   # the 3D quarter model as shipped: the foam on the bottom, the axis at x = z = 0
         s = yaml.safe_load(open(SCENE_3D))
         s["scene"] = f"underwater_foam_3d_{model}"
@@ -74,13 +84,15 @@ def scene(model, end, full=False, dim=2):
         s["output"]["directory"] = s["scene"]
         s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, FOAM_THICKNESS, 0.0]}]
         return s
-    s = yaml.safe_load(open(SCENE))
+    s = yaml.safe_load(open(SCENE_TUBE if tube else SCENE))
     if full:   # the shipped scene's depth: the foam on the container's bottom, 21 cm below the charge
-        s["scene"] = f"underwater_foam_full_{model}"
-        s["description"] = f"Underwater shock on the foam 21 cm below the charge, foam model '{model}'"
+        s["scene"] = f"underwater_foam_full{'_tube' if tube else ''}_{model}"
+        s["description"] = (f"Underwater shock on the foam 21 cm below the charge{', with the PVC tube' if tube else ''}, "
+                            f"foam model '{model}'")
         s["time"]["end"] = end
         foam_material(s, model)
-        s["geometry"] = [g for g in s["geometry"] if g["name"] != "tube"]
+        if not tube:
+            s["geometry"] = [g for g in s["geometry"] if g["name"] != "tube"]
         s["output"]["directory"] = s["scene"]
         s["output"]["probes"] = [{"name": "foam_top", "point": [0.0, FOAM_THICKNESS]}]
         return s
@@ -157,14 +169,20 @@ def main():
                          "cavitation model to run past 49.5 us); use --end 1.5e-4")
     ap.add_argument("--dim", type=int, choices=[2, 3], default=2,
                     help="3: the 3D quarter model (configs/underwater_foam_3d.yaml) at its depth; use --end 1.5e-4")
+    ap.add_argument("--tube", action="store_true",
+                    help="with --full: the scene with the slides' PVC tube (configs/underwater_tube_2d.yaml), the tube "
+                         "kept; scenes and output files get a _tube suffix")
     args = ap.parse_args()
+    if args.tube and (not args.full or args.dim == 3):
+        ap.error("--tube needs --full (the tube's scene, configs/underwater_tube_2d.yaml, is 2D at the shipped depth)")
+    tube = "_tube" if args.tube else ""
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     exe = os.path.join(os.path.abspath(args.build), "coupler", "mpmice")
     models = args.models.split(",")
     procs = []
     for m in models:
-        s = scene(m, args.end, args.full, args.dim)
+        s = scene(m, args.end, args.full, args.dim, args.tube)
         path = os.path.join(out, s["scene"] + ".yaml")
         yaml.safe_dump(s, open(path, "w"), sort_keys=False)
         if not args.skip_run:
@@ -177,7 +195,7 @@ def main():
             procs = []
     summary, curves = [], []
     for m in models:
-        name = f"underwater_foam_3d_{m}" if args.dim == 3 else f"underwater_foam_full_{m}" if args.full \
+        name = f"underwater_foam_3d_{m}" if args.dim == 3 else f"underwater_foam_full{tube}_{m}" if args.full \
             else f"underwater_foam_{m}"
         bottom = 0.0 if args.full or args.dim == 3 else FOAM_BOTTOM
         d = os.path.join(out, name)
@@ -199,19 +217,19 @@ def main():
                         "crush_strain": (FOAM_THICKNESS - thick[-1]) / FOAM_THICKNESS,
                         "peak_bottom_stress_MPa": float(np.nanmax(hist[:, -1])) / 1e6,
                         "peak_p_above_foam_MPa": float(np.max(hist[:, 2])) / 1e6})
-    with open(os.path.join(out, "underwater_foam_models.csv"), "w") as f:
+    with open(os.path.join(out, f"underwater_foam_models{tube}.csv"), "w") as f:
         f.write("model,quantity,time_s,value\n")
         for c in curves:
             f.write(f"{c[0]},{c[1]},{c[2]:.9g},{c[3]:.9g}\n")
-    with open(os.path.join(out, "underwater_foam_summary.csv"), "w") as f:
+    with open(os.path.join(out, f"underwater_foam_summary{tube}.csv"), "w") as f:
         keys = list(summary[0].keys())
         f.write(",".join(keys) + "\n")
         for r in summary:
             f.write(",".join(f"{r[k]:.6g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + "\n")
     for r in summary:
         print(", ".join(f"{k} {v:.4g}" if isinstance(v, float) else f"{k} {v}" for k, v in r.items()))
-    png = os.path.join(out, "underwater_foam_models.png")
-    c = os.path.join(out, "underwater_foam_models.csv")
+    png = os.path.join(out, f"underwater_foam_models{tube}.png")
+    c = os.path.join(out, f"underwater_foam_models{tube}.csv")
     sel = lambda m, q: f"'< grep ^{m},{q}, {c}'"
     gp = (f"set terminal pngcairo size 1000,800; set output '{png}'; set datafile separator ','; set multiplot layout 2,1;"
           "set grid; set xlabel 'time [us]'; set ylabel 'foam thickness on the axis [mm]'; set key bottom left;"
