@@ -238,6 +238,11 @@ struct IceOptions {
   // the step is at most cfl dx / (fraction c) even where the flow is slower (docs/ice.md
   // "Semi-implicit step"). A low-Mach flow whose acoustics do not matter may lower it.
   double semi_implicit_sound_fraction = 0.1;
+  // The semi-implicit pressure's time weight theta: the face velocities and the Lagrangian phase
+  // take p_eq + theta dp, the pressure equation kbar dp - theta dt^2 div(beta grad dp) = -dt div U*.
+  // 1: backward Euler (dissipative, the default); 0.5: Crank-Nicolson (second order in time, no
+  // damping of the acoustics). docs/ice.md "The semi-implicit pressure's time weight".
+  double semi_implicit_theta = 1.0;
   // The equilibrium pressure's energies: "fixed_energy" (each material keeps its carried e while
   // the solve moves volume between materials) or "with_work" (each fluid does the work p dv of its
   // volume change, the fluids' energy conserved; docs/ice.md "Equilibrium with work").

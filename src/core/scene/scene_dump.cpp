@@ -270,6 +270,7 @@ void options(std::ostream& o, const Scene& s) {
     << ", quadratic: " << num(i.shock_viscosity_quadratic) << "}\n  face_pressure: " << i.face_pressure
     << "\n  trace_mass_fraction: " << num(i.trace_mass_fraction) << "\n  equilibrium: " << i.equilibrium
     << "\n  semi_implicit_sound_fraction: " << num(i.semi_implicit_sound_fraction)
+    << "\n  semi_implicit_theta: " << num(i.semi_implicit_theta)
     << "\n  exchange:\n    momentum: " << num(i.exchange_momentum)
     << "\n    heat: " << num(i.exchange_heat) << "\n";
   if (!i.exchange_pairs.empty()) {

@@ -590,7 +590,8 @@ class SchemaReader {
     const YamlMap m = v.map();
     m.allow({"advection", "limiter", "pressure_solver", "linear_solver", "solver_tolerance",
              "solver_max_iterations", "preconditioner_reuse", "exchange", "pressure_iterations", "pressure_tolerance", "shock_viscosity",
-             "face_pressure", "trace_mass_fraction", "equilibrium", "semi_implicit_sound_fraction"});
+             "face_pressure", "trace_mass_fraction", "equilibrium", "semi_implicit_sound_fraction",
+             "semi_implicit_theta"});
     IceOptions& o = s_.ice;
     o.advection = m.choice("advection", o.advection, {"first_order", "second_order"}, "advection scheme");
     o.limiter = m.choice("limiter", o.limiter, {"minmod", "van_leer", "superbee"}, "limiter");
@@ -607,6 +608,7 @@ class SchemaReader {
     o.equilibrium = m.choice("equilibrium", o.equilibrium, {"fixed_energy", "with_work"}, "equilibrium pressure energies");
     o.semi_implicit_sound_fraction =
         m.number("semi_implicit_sound_fraction", o.semi_implicit_sound_fraction, Range::openClosed(0, 1));
+    o.semi_implicit_theta = m.number("semi_implicit_theta", o.semi_implicit_theta, Range::closed(0.5, 1));
     if (const auto sv = m.get("shock_viscosity")) {
       const YamlMap q = sv->map();
       q.allow({"linear", "quadratic"});

@@ -1,10 +1,13 @@
 // IceSolver phase 5, semi-implicit: the pressure increment solves
-//   kbar dp - dt^2 div( beta_f grad dp ) = -dt div U*,    beta_f = sum_r theta_r,f phi_r,f
-// (theta upwinded by the face velocity u*, phi the face mobility with the exchange at faces),
+//   kbar dp - w dt^2 div( beta_f grad dp ) = -dt div U*,    beta_f = sum_r theta_r,f phi_r,f
+// (theta upwinded by the face velocity u*, phi the face mobility with the exchange at faces; w the
+// time weight ice.semi_implicit_theta: 1 backward Euler, 0.5 Crank-Nicolson),
 // a symmetric positive definite system: ice/linear's Jacobi-preconditioned CG over all ranks
 // (`cg`, with ghost exchange per product), hypre's structured PCG preconditioned by PFMG or SMG
 // on the assembled stencil over all ranks (`pfmg_pcg`, `smg_pcg`) or Eigen's BiCGSTAB on it
-// (`bicgstab`, one rank). Then u_f,r = u*_f,r - dt phi_r,f grad dp and p = p_eq + dp.
+// (`bicgstab`, one rank). Then u_f,r = u*_f,r - w dt phi_r,f grad dp and p = p_eq + w dp, the
+// pressure the face pressure and the Lagrangian phase take (with w = 0.5 the step's midpoint: the
+// p dV work of an expansion at the end-of-step pressure heated a strong rarefaction, docs/ice.md).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -83,7 +86,7 @@ void IceSolver::assembleSemiImplicit() {
         tsum += t;
       }
       if (sf.on) b = tsum > 0 ? (1.0 - sf.cover[d].data()[fi]) * b / tsum : 0.0;
-      coef(i, j, k) = dt * dt * b / dx2;
+      coef(i, j, k) = semiTheta_ * dt * dt * b / dx2;
     });
   }
   const VolumeFluxFaces faces(st_, mesh_, owned_);  // the divergence of the face volume fluxes
@@ -171,12 +174,12 @@ void IceSolver::solveSemiImplicit() {
     forEach(fb, [&](int i, int j, int k) {
       const std::int64_t c = sb.index(i, j, k), f = fb.index(i, j, k);
       const double g = (xp[c] - xp[c - sd]) / dx;
-      for (int r = 0; r < nm; ++r) uf[r][f] -= dt_ * phi[r][f] * g;
+      for (int r = 0; r < nm; ++r) uf[r][f] -= semiTheta_ * dt_ * phi[r][f] * g;
     });
   }
   computeVolumeFluxes(st_, mesh_, owned_);
-  // p = p_eq + dp (p holds the equilibrium pressure until here).
-  forEach(owned_, [&](int i, int j, int k) { st_.press(i, j, k) += x(i, j, k); });
+  // p = p_eq + w dp (p holds the equilibrium pressure until here).
+  forEach(owned_, [&](int i, int j, int k) { st_.press(i, j, k) += semiTheta_ * x(i, j, k); });
 }
 
 }  // namespace mpmice::ice

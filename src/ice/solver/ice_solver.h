@@ -250,6 +250,7 @@ class IceSolver {
   bool stepRamp_ = false;  // semi-implicit with two or more fluids (kSemiImplicitStepGrowth)
   double dtInitial_ = 0;   // time.dt_initial: the first step's bound (0: none)
   double soundFraction_ = 0.1;  // ice.semi_implicit_sound_fraction: the semi-implicit step's speed floor / c
+  double semiTheta_ = 1.0;      // ice.semi_implicit_theta: the semi-implicit pressure's time weight
   bool equilibriumWork_ = false;  // ice.equilibrium: with_work
   enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;
   std::string linearSolverName_ = "pfmg_pcg";

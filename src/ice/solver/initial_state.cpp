@@ -36,6 +36,7 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
                                 "'; valid: explicit, semi_implicit");
   semiImplicit_ = o.pressure_solver == "semi_implicit";
   soundFraction_ = o.semi_implicit_sound_fraction;
+  semiTheta_ = o.semi_implicit_theta;
   stepRamp_ = semiImplicit_ && std::count_if(scene.materials.begin(), scene.materials.end(), [](const core::MaterialSpec& m) {
                 return m.kind == core::MaterialKind::Fluid;
               }) >= 2;

@@ -66,6 +66,8 @@ std::vector<BadScene> badScenes() {
        {"test.yaml:7:", "ice.shock_viscosity.linear: -1 is out of range"}},
       {"semi-implicit sound fraction zero", kBase + "ice: {semi_implicit_sound_fraction: 0}\n",
        {"test.yaml:7:", "ice.semi_implicit_sound_fraction: 0 is out of range; expected a number in (0, 1]"}},
+      {"semi-implicit theta below one half", kBase + "ice: {semi_implicit_theta: 0.4}\n",
+       {"test.yaml:7:", "ice.semi_implicit_theta: 0.4 is out of range; expected a number in [0.5, 1]"}},
       {"misspelled face pressure", kBase + "ice: {face_pressure: riemann_lowmach}\n",
        {"test.yaml:7:", "ice.face_pressure: unknown face pressure 'riemann_lowmach'",
         "valid: auto, average, riemann, riemann_low_mach (did you mean 'riemann_low_mach'?)"}},

@@ -40,24 +40,40 @@ inline ShockCase waterAirRealDensity() {
   return {"water_air", {1000, 0, 1e9}, {1.2, 0, 1e5}, {4.4, 6e8}, {1.4, 0}, 0.7, 2.4e-4, true};
 }
 
-/// The water-air case without its rarefaction: the water already in the star state (its isentrope
-/// at p*, moving at u*) drives the air shock as a piston; the exact solution is that contact and
-/// shock only (docs/ice.md "Water-air: start-up or scheme").
-inline ShockCase waterPiston() {
+/// The water-air case's star state on one side (-1 the water, on its isentrope at p*; +1 the
+/// shocked air), moving at u* at p*.
+inline Primitive waterAirStar(int side) {
   const ShockCase wa = waterAirRealDensity();
   const ExactRiemann ex(wa.L, wa.R, wa.gl, wa.gr);
-  ShockCase c = wa;
-  c.name = "water_piston";
-  c.L = {ex.rhoStar(-1), ex.uStar(), ex.pStar()};
-  return c;
+  return {ex.rhoStar(side), ex.uStar(), ex.pStar()};
 }
 
-/// The air shock of the water-air case alone, one material: the shocked air (its star state)
-/// against the air at rest.
+// The water-air case taken apart (docs/ice.md "Water-air: start-up or scheme"), each with the
+// water-air case's mesh, end time and initial interface:
+// water_piston: the water already in its star state drives the air shock as a piston (the exact
+//   solution is that contact and shock only);
+// moving_contact: both star states, one pressure and one velocity (the contact moving at u*);
+// water_fan: the water's rarefaction alone, one material (the water at rest against its star state);
+// air_shock: the air shock alone, one material (the shocked air against the air at rest).
+inline ShockCase waterPiston() {
+  ShockCase c = waterAirRealDensity();
+  c.name = "water_piston";
+  c.L = waterAirStar(-1);
+  return c;
+}
+inline ShockCase movingContact() {
+  ShockCase c = waterPiston();
+  c.name = "moving_contact";
+  c.R = waterAirStar(1);
+  return c;
+}
+inline ShockCase waterFan() {
+  const ShockCase wa = waterAirRealDensity();
+  return {"water_fan", wa.L, waterAirStar(-1), wa.gl, wa.gl, wa.x0, wa.t};
+}
 inline ShockCase airShock() {
   const ShockCase wa = waterAirRealDensity();
-  const ExactRiemann ex(wa.L, wa.R, wa.gl, wa.gr);
-  return {"air_shock", {ex.rhoStar(1), ex.uStar(), ex.pStar()}, wa.R, wa.gr, wa.gr, wa.x0, wa.t};
+  return {"air_shock", waterAirStar(1), wa.R, wa.gr, wa.gr, wa.x0, wa.t};
 }
 
 /// Water (the stiffened gas above) at 1e9 Pa against water at 1e5 Pa, both at 1000 kg/m^3: one
@@ -87,6 +103,7 @@ inline core::Scene shockCaseScene(const ShockCase& c, int n, const TubeOptions& 
   s.ice.limiter = o.limiter;
   s.ice.face_pressure = o.facePressure;
   s.ice.equilibrium = o.equilibrium;
+  s.ice.semi_implicit_theta = o.semiTheta;
   // ICE_TRACE_MASS_FRACTION (the sweep's --trace-mass-fraction): ice.trace_mass_fraction.
   if (const char* y = std::getenv("ICE_TRACE_MASS_FRACTION")) s.ice.trace_mass_fraction = std::atof(y);
   return s;

@@ -3,7 +3,7 @@
 // solution, the fitted order, the overshoot behind each shock (% of the jump) and the stationary
 // contact's velocity. scripts/ice_shock_sweep.sh runs it for every setting (docs/ice.md).
 //   ice_shock_sweep [--advection A] [--limiter L] [--pressure P] [--face-pressure riemann|average]
-//                   [--equilibrium fixed_energy|with_work] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction,water_piston,air_shock]
+//                   [--equilibrium fixed_energy|with_work] [--theta W] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction,water_piston,air_shock,water_fan,moving_contact]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
     else if (k == "--cases") cases = v;
     else if (k == "--face-pressure") o.facePressure = v;
     else if (k == "--equilibrium") o.equilibrium = v;
+    else if (k == "--theta") o.semiTheta = std::atof(v.c_str());  // ice.semi_implicit_theta
     else if (k == "--trace-mass-fraction") setenv("ICE_TRACE_MASS_FRACTION", v.c_str(), 1);  // water_air only
     else if (k == "--cells") {
       cells.clear();
@@ -49,11 +50,11 @@ int main(int argc, char** argv) {
   }
   core::MpiSession mpi(argc, argv);
   g_comm = mpi.world();
-  std::printf("setting: %s %s %s face_pressure %s equilibrium %s cfl %.2f\n", o.advection.c_str(), o.limiter.c_str(),
-              o.pressure.c_str(), o.facePressure.c_str(), o.equilibrium.c_str(), o.cfl);
+  std::printf("setting: %s %s %s face_pressure %s equilibrium %s cfl %.2f theta %.2f\n", o.advection.c_str(),
+              o.limiter.c_str(), o.pressure.c_str(), o.facePressure.c_str(), o.equilibrium.c_str(), o.cfl, o.semiTheta);
   std::vector<test::ShockCase> list;
   // "toro": Sod and Toro 1-5; otherwise the named cases (sod, toro1 .. toro5, water_air, water_rarefaction,
-  // water_piston, air_shock).
+  // water_piston, air_shock, water_fan, moving_contact: docs/ice.md "Water-air: start-up or scheme").
   for (const auto& c : test::toroCases())
     if (cases.find("toro,") != std::string::npos || cases == "toro" || ("," + cases + ",").find("," + c.name + ",") != std::string::npos)
       list.push_back(c);
@@ -61,6 +62,8 @@ int main(int argc, char** argv) {
   if (cases.find("water_rarefaction") != std::string::npos) list.push_back(test::waterRarefaction());
   if (cases.find("water_piston") != std::string::npos) list.push_back(test::waterPiston());
   if (cases.find("air_shock") != std::string::npos) list.push_back(test::airShock());
+  if (cases.find("water_fan") != std::string::npos) list.push_back(test::waterFan());
+  if (cases.find("moving_contact") != std::string::npos) list.push_back(test::movingContact());
   for (const auto& c : list) {
     std::vector<double> err;
     std::vector<int> ns;

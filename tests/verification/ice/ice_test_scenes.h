@@ -73,6 +73,7 @@ struct TubeOptions {
   std::string advection = "second_order", pressure = "explicit", limiter = "van_leer", facePressure = "riemann";
   std::string equilibrium = "fixed_energy";  // ice.equilibrium
   double cfl = 0.4;
+  double semiTheta = 1.0;  // ice.semi_implicit_theta
 };
 
 /// A 1D shock tube on [0, 1] with n cells, one ideal gas, states L | R at x0.
@@ -92,6 +93,7 @@ inline core::Scene shockTube(int n, Primitive L, Primitive R, double x0, double 
   s.ice.limiter = o.limiter;
   s.ice.face_pressure = o.facePressure;
   s.ice.equilibrium = o.equilibrium;
+  s.ice.semi_implicit_theta = o.semiTheta;
   return s;
 }
 
