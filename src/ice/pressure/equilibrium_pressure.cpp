@@ -33,6 +33,7 @@ std::vector<EquilibriumFailure> EquilibriumPressure::solveInBlocks(std::size_t n
                                                                    const std::vector<const double*>* carriedVolume) {
   held_.clear();
   cavitated_.clear();
+  mostIt_ = 0;
   std::vector<EquilibriumFailure> failures;
   for (std::size_t b = 0; b < n; b += kBlock) {
     block_.resize(std::min(kBlock, n - b));
@@ -69,12 +70,17 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
                                      std::vector<EquilibriumFailure>& failures) {
   const std::size_t nm = eos_.size();
   const double inf = std::numeric_limits<double>::infinity();
+  // Cell c took `n` iterations (kept per cell where asked; the most of the solve always).
+  auto count = [&](std::int64_t c, int n) {
+    if (iters) iters[c] = n;
+    mostIt_ = std::max(mostIt_, n);
+  };
   // Records cell c (active slot a) as failed after `iterations`.
   auto fail = [&](EquilibriumFailure::Kind kind, std::size_t a, std::int64_t c, double pc, double lo, double hi,
                   double residual, int iterations) {
     EquilibriumFailure fl{c, pc, lo, hi, residual, iterations, kind, floorMat_[a], floor_[a]};
     failures.push_back(fl);
-    iters[c] = iterations;
+    count(c, iterations);
   };
   // An absent material's density at the cell's pressure p (its state if it arrives). Where its law
   // gives none with a finite positive density there (an ideal gas at p <= 0, as in water under
@@ -97,7 +103,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       if (pc < pCav_[0]) pc = pCav_[0], cavitated_.emplace_back(0, c);  // below the cut-off: a cavity
       p[c] = pc;
       rhoMicro[0][c] = r;
-      iters[c] = 0;
+      count(c, 0);
     }
     return;
   }
@@ -112,13 +118,13 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       const auto o = static_cast<std::size_t>(only);
       eos_[o]->pressure(1, &rho[o][c], &e[o][c], &p[c]);
       if (p[c] < pCav_[o]) p[c] = pCav_[o], cavitated_.emplace_back(only, c);  // below the cut-off: a cavity
-      iters[c] = 0;
+      count(c, 0);
       for (std::size_t r = 0; r < nm; ++r) {
         if (r == o) rhoMicro[r][c] = rho[r][c];
         else absentDensity(r, c, p[c]);
       }
     } else {  // empty cells (no material yet) keep their pressure
-      iters[c] = 0;
+      count(c, 0);
       for (std::size_t r = 0; r < nm; ++r) absentDensity(r, c, p[c]);
     }
   }
@@ -253,7 +259,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
           cavitated_.emplace_back(static_cast<int>(r), c);
         }
         p[c] = F;
-        iters[c] = 0;
+        count(c, 0);
         floor_[a] = inf;  // done: taken out of the iteration below
         floorMat_[a] = -2;
       } else {
@@ -360,7 +366,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       // residual at round-off), so uniform states stay uniform to round-off.
       if (!bad_[a] && std::abs(f) <= tol_ &&
           (std::abs(f) <= 1e-15 || std::abs(f) <= 1e-13 * std::abs(pc) * df_[a])) {
-        iters[c] = it;
+        count(c, it);
         continue;
       }
       if (f < 0) lo = pc; else hi = pc;
@@ -384,7 +390,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         continue;
       }
       if (collapsed && !bad_[a]) {  // the root is resolved to round-off
-        iters[c] = it;
+        count(c, it);
         continue;
       }
       if (it + 1 >= maxIt_) {

@@ -65,7 +65,8 @@ class EquilibriumPressure {
                       std::vector<bool> fluid = {}, double traceMassFraction = 0.0);
 
   /// cells: linear indices into the arrays; rho[r], e[r]: per material; p: in guess, out result;
-  /// rhoMicro[r]: out; iters: out (the iterations per cell). carriedVolume[r] (may
+  /// rhoMicro[r]: out; iters: out (the iterations per cell; nullptr: not kept, only their most,
+  /// lastMostIterations). carriedVolume[r] (may
   /// alias rhoMicro[r]: it is read first): each material's specific volume carried into the step,
   /// needed by the trace rule (nullptr: no trace rule). Returns the failures. The cells are
   /// solved in blocks of kBlock (scratch of the block's size, not the mesh's; each cell's
@@ -81,6 +82,9 @@ class EquilibriumPressure {
                                         const std::vector<const double*>* carriedVolume = nullptr);
 
   [[nodiscard]] double traceMassFraction() const { return traceY_; }
+
+  /// The most iterations any cell of the last solve() took.
+  [[nodiscard]] int lastMostIterations() const { return mostIt_; }
 
   /// The (material, cell) pairs the last solve() held at their carried volume (traces below their
   /// own pressure): their compressibility is 0 in the step.
@@ -105,6 +109,7 @@ class EquilibriumPressure {
   std::vector<const Eos*> eos_;
   double tol_;
   int maxIt_;
+  int mostIt_ = 0;  // the most iterations of a cell in the last solve()
   std::vector<bool> fluid_;
   double traceY_;
   // Trace rule per material, indexed by cell - c0_: p_own (-inf: not held) and the carried density.

@@ -99,7 +99,9 @@ std::vector<EquilibriumFailure> IceSolver::equilibrateWithWork(
     eNow.push_back(st_.mat[r].eint.data());
   }
   auto resolve = [&](const std::vector<std::int64_t>& which) {
-    return equil_->solve(which, rho, eNow, st_.press.data(), rhoMicro, st_.iters.data(), &carriedNow);
+    auto found = equil_->solve(which, rho, eNow, st_.press.data(), rhoMicro, pressureIterationsOut(), &carriedNow);
+    mostPressureIterations_ = std::max(mostPressureIterations_, equil_->lastMostIterations());
+    return found;
   };
   for (int it = 0; it < kMaxWorkIterations && !active.empty(); ++it) {
     std::vector<std::int64_t> next;

@@ -93,7 +93,8 @@ void IceSolver::computeEquilibriumPressure() {
       carriedCopy.emplace_back(ownedCells_.size());
       ownedCells_.forEach([&](std::size_t a, std::int64_t c) { carriedCopy.back()[a] = m.spvol.data()[c]; });
     }
-  auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, st_.iters.data(), &carried);
+  auto failures = equil_->solve(ownedCells_, rho, e, st_.press.data(), rhoMicro, pressureIterationsOut(), &carried);
+  mostPressureIterations_ = equil_->lastMostIterations();
   reportEquilibriumFailures(failures);
   std::vector<std::pair<int, std::int64_t>> held = equil_->heldTraces(), cavitated = equil_->cavitated();
   if (!carriedCopy.empty()) {

@@ -604,9 +604,10 @@ std::vector<Field> IceSolver::outputFields(const std::function<bool(const std::s
   };
   add("pressure", 1, [&](Field& f, int i, int j, int k) { f(i, j, k) = st_.press(i, j, k); });
   const core::Box& sb = st_.press.box();
-  add("pressure_iterations", 1, [&](Field& f, int i, int j, int k) {
-    f(i, j, k) = st_.iters[static_cast<std::size_t>(sb.index(i, j, k))];
-  });
+  if (!st_.iters.empty())  // kept where the output writes them (ice_state.h)
+    add("pressure_iterations", 1, [&](Field& f, int i, int j, int k) {
+      f(i, j, k) = st_.iters[static_cast<std::size_t>(sb.index(i, j, k))];
+    });
   const double V = mesh_.cellVolume();
   for (const MaterialState& m : st_.mat) {
     add(m.name + "_density", 1, [&](Field& f, int i, int j, int k) { f(i, j, k) = m.mass(i, j, k) / V; });

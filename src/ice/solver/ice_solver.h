@@ -145,6 +145,10 @@ class IceSolver {
     semi_.mobilityFresh = false;
     return st_;
   }
+  /// The most equilibrium iterations a cell of this rank took in the last step's equilibrium
+  /// solves (the progress line's p_iters; the per-cell counts, state().iters, are kept only when
+  /// the output writes them: the field pressure_iterations).
+  [[nodiscard]] int mostPressureIterations() const { return mostPressureIterations_; }
   [[nodiscard]] int numMaterials() const { return static_cast<int>(st_.mat.size()); }
   /// The momentum exchange coefficient K of materials a and b [kg/(m^3 s)] (ice.exchange.momentum,
   /// ice.exchange.pairs; 0 for a == b).
@@ -250,6 +254,9 @@ class IceSolver {
   bool stepRamp_ = false;  // semi-implicit with two or more fluids (kSemiImplicitStepGrowth)
   double dtInitial_ = 0;   // time.dt_initial: the first step's bound (0: none)
   double soundFraction_ = 0.1;  // ice.semi_implicit_sound_fraction: the semi-implicit step's speed floor / c
+  int mostPressureIterations_ = 0;  // mostPressureIterations()
+  // The per-cell equilibrium iteration counts to fill (nullptr where they are not kept).
+  int* pressureIterationsOut() { return st_.iters.empty() ? nullptr : st_.iters.data(); }
   double semiTheta_ = 1.0;      // ice.semi_implicit_theta: the semi-implicit pressure's time weight
   bool equilibriumWork_ = false;  // ice.equilibrium: with_work
   enum class LinearSolver { Cg, Bicgstab, PfmgPcg, SmgPcg } linearSolver_ = LinearSolver::PfmgPcg;

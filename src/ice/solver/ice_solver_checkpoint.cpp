@@ -79,11 +79,17 @@ void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::stri
     else
       data.copyTo(key, out);
   });
+  // The per-cell iteration counts are kept only where the output writes them (ice_state.h), by the
+  // run that wrote the checkpoint and by this one each on its own: a diagnostic the next step
+  // makes again, taken where both keep them and 0 where only this run does.
   const std::vector<double>& it = data.get(prefix + ".iters");
-  if (it.size() != st_.iters.size())
+  if (!it.empty() && !st_.iters.empty() && it.size() != st_.iters.size())
     throw std::invalid_argument(data.source() + ": checkpoint entry '" + prefix + ".iters' has " +
                                 std::to_string(it.size()) + " values, expected " + std::to_string(st_.iters.size()));
-  std::transform(it.begin(), it.end(), st_.iters.begin(), [](double x) { return static_cast<int>(x); });
+  if (it.size() == st_.iters.size())
+    std::transform(it.begin(), it.end(), st_.iters.begin(), [](double x) { return static_cast<int>(x); });
+  else
+    std::fill(st_.iters.begin(), st_.iters.end(), 0);
   const auto& c = data.get(prefix + ".clock");
   // 7: written before the energy audit (its sums start at 0); 9: before the semi-implicit step's
   // growth bound (the resumed run starts it again from the explicit step).

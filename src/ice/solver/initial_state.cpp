@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/output_selection.h"
 #include "ice/advection/limiter.h"
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/ice_constants.h"
@@ -104,7 +105,10 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
       badInput(scene.materials[r].cavitation.where,
                "materials." + st_.mat[r].name + ".cavitation: not available with ice.pressure_solver: semi_implicit "
                "(a cavitated cell's infinite compressibility is not in its linear system); use explicit");
-  st_.allocate(owned_, stored, dim, semiImplicit_);
+  // The per-cell equilibrium iteration counts only where the output writes them.
+  const bool keepIterations =
+      scene.output.enabled && core::outputSelected(scene.output.fields, "pressure_iterations");
+  st_.allocate(owned_, stored, dim, semiImplicit_, keepIterations);
   std::vector<bool> fluid;
   for (const MaterialState& m : st_.mat) fluid.push_back(!m.external);
   equil_ = std::make_unique<EquilibriumPressure>(eos, o.pressure_tolerance, o.max_pressure_iterations, fluid,

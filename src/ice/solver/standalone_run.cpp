@@ -81,13 +81,7 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   while (core::goesOn(solver.time(), solver.steps(), scene.time.end, scene.time.max_steps)) {
     solver.step();
     checkHealth(solver);  // collective: every rank stops on a non-physical state
-    double maxIt = 0;
-    const auto& it = solver.state().iters;
-    const core::Box& sb = solver.state().press.box();
-    core::forEach(solver.ownedBox(), [&](int i, int j, int k) {
-      maxIt = std::max(maxIt, double(it[static_cast<std::size_t>(sb.index(i, j, k))]));
-    });
-    core::Progress::Extras extras{{"p_iters", comm.max(maxIt)}};
+    core::Progress::Extras extras{{"p_iters", comm.max(double(solver.mostPressureIterations()))}};
     if (solver.semiImplicit()) extras.emplace_back("lin_iters", double(solver.linearIterations()));
     progress.step(static_cast<int>(solver.steps()), solver.time(), solver.dt(), extras);
     if (outputs.due(solver.time())) output();

@@ -2,7 +2,8 @@
 
 namespace mpmice::ice {
 
-void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit) {
+void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit,
+                        bool keepIterations) {
   using core::Centering;
   using core::Field;
   auto cell = [&](const std::string& n, int nc, double init = 0.0) {
@@ -33,7 +34,7 @@ void IceState::allocate(const core::Box& owned, const core::Box& stored, int dim
   }
   press = cell("pressure", 1);
   dp = semiImplicit ? cell("pressure_increment", 1) : Field();
-  iters.assign(static_cast<std::size_t>(stored.numPts()), 0);
+  iters.assign(keepIterations ? static_cast<std::size_t>(stored.numPts()) : 0, 0);
   for (int d = 0; d < dim; ++d) {
     pressFace[d] = Field("face_pressure", Centering::Cell, owned.faces(d), 1, 0);
     volFlux[d] = Field("face_volume_flux", Centering::Cell, owned.faces(d), 1, 0);

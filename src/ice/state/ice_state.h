@@ -86,7 +86,8 @@ struct IceState {
   core::Field press;
   core::Field dp;         // pressure increment: the semi-implicit solve's unknown (empty with the explicit pressure)
   /// Equilibrium iterations per stored cell (a diagnostic; the cell fields' indexing, press.box()),
-  /// a count: 4 bytes, not a double.
+  /// a count: 4 bytes, not a double; kept only where the output writes them (pressure_iterations),
+  /// empty otherwise (IceSolver::mostPressureIterations has the step's most).
   std::vector<int> iters;
   /// Per face (empty beyond dim): sum_r theta_r,f u_f,r (theta upwinded) and the face pressure,
   /// from the pressure increment and the face pressure to the Lagrangian phase; the advection
@@ -96,8 +97,8 @@ struct IceState {
   SolidFaces solidFaces;
 
   /// Allocates every field over `stored` (cells) and the faces of `owned`; dp only with the
-  /// semi-implicit pressure.
-  void allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit);
+  /// semi-implicit pressure, iters only with keepIterations.
+  void allocate(const core::Box& owned, const core::Box& stored, int dim, bool semiImplicit, bool keepIterations);
 };
 
 }  // namespace mpmice::ice

@@ -112,4 +112,30 @@ TEST(IceEquilibriumBlocks, BlocksGiveTheCellByCellResultBitForBit) {
   }
 }
 
+// Without per-cell counts (iters nullptr: the solver keeps them only for the output) the solve
+// gives the same pressures, and its most iterations are the largest per-cell count.
+TEST(IceEquilibriumBlocks, WithoutPerCellCountsTheSolveIsTheSameAndKeepsTheMost) {
+  const auto water = ice::makeEos(test::modelSpec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 6e8}}), 4186);
+  const auto air = ice::makeEos(test::modelSpec("ideal_gas", {{"gamma", 1.4}}), 717.5);
+  ice::EquilibriumPressure eq({water.get(), air.get()}, 1e-11, 100, {true, true}, 1e-4);
+  const Cells cells = makeCells(2600, *water, *air);
+  const Result counted = solve(eq, cells, false);
+  int most = 0;
+  for (const std::int64_t c : cells.list) most = std::max(most, counted.iters[static_cast<std::size_t>(c)]);
+  ASSERT_GT(most, 1);
+  EXPECT_EQ(eq.lastMostIterations(), most);
+  const std::size_t size = cells.rho[0].size();
+  std::vector<double> p(size, 1e5), rm0(size, 0.0), rm1(size, 0.0);
+  const std::vector<const double*> rho = {cells.rho[0].data(), cells.rho[1].data()},
+                                   e = {cells.e[0].data(), cells.e[1].data()},
+                                   carried = {cells.carried[0].data(), cells.carried[1].data()};
+  eq.solve(cells.list, rho, e, p.data(), {rm0.data(), rm1.data()}, nullptr, &carried);
+  EXPECT_EQ(eq.lastMostIterations(), most);
+  for (const std::int64_t c : cells.list) {
+    const auto i = static_cast<std::size_t>(c);
+    if (!std::isfinite(counted.p[i])) continue;
+    EXPECT_EQ(p[i], counted.p[i]) << c;
+  }
+}
+
 }  // namespace
