@@ -124,7 +124,8 @@ struct ShockResult {
   double createdShare = 0;         // energy the fallbacks created / total energy (energy_audit.h)
 };
 
-/// ICE_SHOCK_T0CELLS (runShockCase): start a two-material case from its exact solution.
+/// ICE_SHOCK_T0CELLS=k (runShockCase's exactStartCells where it is not given): start a
+/// two-material case from its exact solution.
 /// ICE_SHOCK_TRACE="case,from,to,i0,i1": after each step from..to of that case, every material's
 /// mass, volume fraction, e, v and u in cells i0..i1 (the water-air analysis in docs/ice.md).
 inline void traceCells(const ice::IceSolver& s, const std::string& name) {
@@ -148,18 +149,22 @@ inline void traceCells(const ice::IceSolver& s, const std::string& name) {
   }
 }
 
-inline ShockResult runShockCase(const ShockCase& c, int n, const TubeOptions& o) {
+/// exactStartCells k > 0 (two materials): start from the exact solution at the time t0 its contact
+/// has moved k cells (so it lies on a face), each cell the exact state at its centre, and run to
+/// t - t0: what the start-up at a sharp interface adds (docs/ice.md "Water-air: start-up or
+/// scheme"); negative: ICE_SHOCK_T0CELLS, else 0 (the case's own start).
+inline ShockResult runShockCase(const ShockCase& c, int n, const TubeOptions& o, double exactStartCells = -1) {
   ShockResult r;
   const ExactRiemann ex(c.L, c.R, c.gl, c.gr);
+  if (exactStartCells < 0) {
+    const char* e0 = std::getenv("ICE_SHOCK_T0CELLS");
+    exactStartCells = e0 ? std::atof(e0) : 0.0;
+  }
   try {
     ice::IceSolver s(shockCaseScene(c, n, o), comm());
     double t0 = 0;
-    if (const char* e0 = std::getenv("ICE_SHOCK_T0CELLS"); e0 && c.twoMaterials && std::atof(e0) > 0) {
-      // ICE_SHOCK_T0CELLS=k (two materials): start from the exact solution at the time t0 its
-      // contact has moved k cells (so it lies on a face), each cell the exact state at its centre,
-      // and run to t - t0: what the start-up at a sharp interface adds (docs/ice.md "Water-air:
-      // start-up or scheme").
-      const double k = std::atof(e0), dxx = 1.0 / n;
+    if (c.twoMaterials && exactStartCells > 0) {
+      const double k = exactStartCells, dxx = 1.0 / n;
       t0 = k * dxx / ex.uStar();
       auto& st = s.state();
       const double V = dxx;

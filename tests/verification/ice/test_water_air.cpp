@@ -227,3 +227,34 @@ TEST(IceWaterAir, SemiImplicitVanLeerCompletesWithAndWithoutWork) {
   }
   EXPECT_LT(err[1], 0.7 * err[0]);  // converging (measured ratio 0.63)
 }
+
+// Where the water-air overshoot is made (docs/ice.md "Water-air: start-up or scheme"): the water
+// already in its star state driving the air (contact and air shock only) overshoots behind the
+// air shock when it starts as a sharp step (+2.59 % in the air's density at 800 cells, explicit:
+// the contact and the newborn shock share a cell whose single pressure cannot hold p*), not when it
+// starts from the exact solution with its contact 4 cells on (at most +0.15 % in both pressures at
+// 400 and 800 cells), and the contact alone (both star states) moves without disturbing the
+// pressure. So the start-up is the error, the mixed cells' transport of a moving contact is not.
+TEST(IceWaterAir, TheOvershootIsTheStartUpNotTheMovingContact) {
+  for (const char* pressure : {"explicit", "semi_implicit"}) {
+    test::TubeOptions o;
+    o.pressure = pressure;
+    for (const int n : {400, 800}) {
+      const test::ShockResult sharp = test::runShockCase(test::waterPiston(), n, o, 0);
+      const test::ShockResult exact = test::runShockCase(test::waterPiston(), n, o, 4);
+      std::printf("%s %d cells: water piston from a step: air %+.2f %%, p %+.2f %%; from the exact solution: air "
+                  "%+.2f %%, p %+.2f %%\n",
+                  pressure, n, sharp.overRhoOwn, sharp.overP, exact.overRhoOwn, exact.overP);
+      ASSERT_TRUE(sharp.completed && exact.completed) << sharp.error << exact.error;
+      EXPECT_LT(exact.overRhoOwn, 0.5) << pressure << " " << n;
+      EXPECT_LT(exact.overP, 0.5) << pressure << " " << n;
+      if (n == 800) {
+        EXPECT_GT(sharp.overRhoOwn, 1.5) << pressure;  // the start-up's excess, measured +2.4 .. +2.6 %
+      }
+    }
+    const test::ShockResult contact = test::runShockCase(test::movingContact(), 800, o, 0);
+    ASSERT_TRUE(contact.completed) << contact.error;
+    const double pStar = test::waterAirStar(1).p;
+    EXPECT_NEAR(contact.minP, pStar, 1e-9 * pStar) << pressure;
+  }
+}
