@@ -30,6 +30,11 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   storedCommandLine() = line;
   int initialized = 0;
   MPI_Initialized(&initialized);
+  // Open MPI's OMPIO shared-memory shared-file-pointer component, unless the user chose one: nothing
+  // here uses shared file pointers, and a run killed inside an HDF5 file's creation left its named
+  // semaphore (/dev/shm/sem.OMPIO_<file>) at 0, on which the next run creating that file waited for
+  // ever. scripts/mpirun passes the same; this covers a run started alone or by another mpirun.
+  if (!initialized) setenv("OMPI_MCA_sharedfp", "^sm", 0);
   if (!initialized) MPI_Init(&argc, &argv);
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
 }

@@ -14,6 +14,14 @@
 # MODE sigstop_mid_run: the same with mpm_solver stopped by SIGSTOP after a second of steps.
 # MODE stall_at_the_end: ice_solver sleeps for ever after its last step (SHORT_SCENE's step count
 #                      given in STALL_STEP): mpm_solver's wait at the end of the run names it.
+# MODE stale_io_semaphore: a run killed inside an HDF5 file's creation leaves Open MPI's OMPIO
+#                      shared-file-pointer semaphore (/dev/shm/sem.OMPIO_<file>) at 0; with the sm
+#                      component the next run that creates that file waited on it for ever (the
+#                      watchdog then ended the launch). scripts/mpirun excludes that component
+#                      (--mca sharedfp ^sm) and so does every program's MPI start (MpiSession, for
+#                      a program started alone or by another mpirun): SHORT_SCENE under a fresh
+#                      name completes beside such a semaphore for its first output file, by
+#                      `coupler run` and by `mpmice` alone (the semaphores made here, removed at the end).
 set -u
 coupler=$1 bin=$2 scene=$3 long=$4 mode=$5
 work=$(mktemp -d)
@@ -82,6 +90,30 @@ case "$mode" in
     [ $status -eq 0 ] || fail "the run with a stale lock failed ($status)"
     grep -q "note: taking over the stale lock output/pressurized_cylinder.lock of pid $dead" <<<"$out" || fail "no note of the stale lock"
     [ ! -e output/pressurized_cylinder.lock ] || fail "the lock was not released at the end" ;;
+  stale_io_semaphore)
+    name=stale_sem_$$ alone=stale_sem_alone_$$
+    sems="/OMPIO_${name}_fluid_000000.h5.part /OMPIO_${alone}_000000.h5.part"
+    trap 'pkill -KILL -f -- "$work/" 2>/dev/null; rm -rf "$work"; for s in $sems; do rm -f "/dev/shm/sem.${s#/}"; done' EXIT
+    for s in $sems; do
+      /usr/bin/python3 -c '
+import ctypes, os, sys
+libc = ctypes.CDLL("libc.so.6", use_errno=True)
+libc.sem_open.restype = ctypes.c_void_p
+s = libc.sem_open(sys.argv[1].encode(), os.O_CREAT | os.O_EXCL, 0o644, 0)
+if not s: sys.exit("sem_open: " + os.strerror(ctypes.get_errno()))
+libc.sem_close(ctypes.c_void_p(s))' "$s" || fail "could not make the semaphore $s"
+      [ -e "/dev/shm/sem.${s#/}" ] || fail "no /dev/shm/sem.${s#/}"
+    done
+    sed -e "s/^scene: .*/scene: $name/" "$scene" > "$work/$name.yaml"
+    out=$("$coupler" run --bin-dir "$bin" "$work/$name.yaml" 2>&1); status=$?
+    echo "$out" | grep -v '^\[' | tail -3
+    [ $status -eq 0 ] || fail "coupler run beside a stale OMPIO semaphore failed ($status)"
+    ls "$work"/output/${name}_fluid_000000.h5 > /dev/null || fail "no first output file of coupler run"
+    mkdir "$work/alone" && sed -e "s/^scene: .*/scene: $alone/" "$scene" > "$work/alone/$alone.yaml"
+    out=$(cd "$work/alone" && timeout 30 "$bin/coupler/mpmice" "$alone.yaml" 2>&1); status=$?
+    echo "$out" | tail -1
+    [ $status -eq 0 ] || fail "mpmice alone beside a stale OMPIO semaphore failed ($status)"
+    ls "$work"/alone/output/${alone}_000000.h5 > /dev/null || fail "no first output file of mpmice" ;;
   stall_mid_run|sigstop_mid_run|stall_at_the_end)
     if [ "$mode" = stall_at_the_end ]; then cp "$scene" "$work/long.yaml"; else long_scene "$work/long.yaml"; fi
     case "$mode" in
