@@ -3,8 +3,9 @@
 # the real density ratio (1.2 kg/m^3) at 100, 200, 400, 800 and 1600 cells, for every ICE setting
 # (advection order x limiter x pressure solver), default face pressure (riemann) first, then the
 # average for comparison, then the semi-implicit pressure with the Crank-Nicolson time weight
-# (ice.semi_implicit_theta 0.5) and the riemann face pressure. Prints L1(rho), the fitted order, the overshoot behind each shock and
-# the stationary contact's velocity per run, or STOPPED with the run's error.
+# (ice.semi_implicit_theta 0.5) and the riemann face pressure. Prints L1(rho), the fitted order,
+# the overshoot behind each shock and the stationary contact's velocity per run, or STOPPED with
+# the run's error.
 #   bash scripts/ice_shock_sweep.sh [BUILD_DIR] [CELLS]      (about 4 min on an idle core)
 set -euo pipefail
 build=${1:-build}

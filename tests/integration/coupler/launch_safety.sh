@@ -95,7 +95,7 @@ case "$mode" in
     sems="/OMPIO_${name}_fluid_000000.h5.part /OMPIO_${alone}_000000.h5.part"
     trap 'pkill -KILL -f -- "$work/" 2>/dev/null; rm -rf "$work"; for s in $sems; do rm -f "/dev/shm/sem.${s#/}"; done' EXIT
     for s in $sems; do
-      /usr/bin/python3 -c '
+      python3 -c '
 import ctypes, os, sys
 libc = ctypes.CDLL("libc.so.6", use_errno=True)
 libc.sem_open.restype = ctypes.c_void_p
