@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/health/health.h"
+#include "ice/exchange/pointwise_exchange.h"  // kMaxMaterials
 #include "ice/ice_constants.h"
 #include "ice/solver/health_check.h"
 #include "ice/state/phase_units.h"
@@ -248,20 +249,50 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   int nuMaterial = -1;
   bool viscous = false;
   if (anyViscous_) {
-    for (int r = 0; r < nm; ++r) {
-      const MaterialState& m = st_.mat[r];
-      if (m.external || !(m.viscosity > 0)) continue;
-      const double* th = m.theta.data();
-      const double* mass = m.mass.data();
-      forEach(owned_, [&](int i, int j, int k) {
-        const std::int64_t c = sb.index(i, j, k);
-        if (th[c] > kPresentFraction && mass[c] > 0 && m.viscosity * th[c] * V / mass[c] > localNu) {
-          localNu = m.viscosity * th[c] * V / mass[c];
+    // A viscous fluid held to the cell's other materials by the momentum exchange does not diffuse
+    // on its own: the exchange (implicit, after the Lagrangian phase) gives the momentum its
+    // viscous update made to the whole cell. Its own velocity's deviation from the others', which
+    // the update multiplies by at most 1 - 4 dt nu_r sum_d dx_d^-2 (nu_r = mu / rho_r), the exchange
+    // divides by 1 + dt k_r, k_r = v_r sum_s theta_s K_rs; so with k_r >= 4 nu_r sum_d dx_d^-2, i.e.
+    // sum_s theta_s K_rs >= 4 mu sum_d dx_d^-2 (the density cancels), no step makes it grow, and
+    // what bounds the step is the cell's mixture: nu = mu theta_r V / M with M the cell's mass of
+    // every material (summed over the fluids so held). A rarefied trace of a viscous liquid in a
+    // solid's cells (nu_r = mu / rho_r ~ 1e2 m^2/s) no longer sets the step (docs/ice.md).
+    const double* th[kMaxMaterials];
+    const double* ms[kMaxMaterials];
+    for (int r = 0; r < nm; ++r) th[r] = st_.mat[r].theta.data(), ms[r] = st_.mat[r].mass.data();
+    forEach(owned_, [&](int i, int j, int k) {
+      const std::int64_t c = sb.index(i, j, k);
+      double held = 0, heldMost = 0, M = -1;  // M: computed on first need
+      int heldMaterial = -1;
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        if (m.external || !(m.viscosity > 0)) continue;
+        if (!(th[r][c] > kPresentFraction && ms[r][c] > 0)) continue;
+        double coupling = 0;
+        if (anyK_)
+          for (int s = 0; s < nm; ++s)
+            if (s != r && th[s][c] > kPresentFraction && ms[s][c] > 0) coupling += th[s][c] * momentumExchange(r, s);
+        if (coupling > 0 && coupling >= 4.0 * m.viscosity * inv2) {
+          if (M < 0) {
+            M = 0;
+            for (int s = 0; s < nm; ++s) M += std::max(ms[s][c], 0.0);
+          }
+          const double part = m.viscosity * th[r][c] * V / M;
+          held += part;
+          if (part > heldMost) heldMost = part, heldMaterial = r;
+        } else if (m.viscosity * th[r][c] * V / ms[r][c] > localNu) {
+          localNu = m.viscosity * th[r][c] * V / ms[r][c];
           nuCell = c;
           nuMaterial = r;
         }
-      });
-    }
+      }
+      if (held > localNu) {
+        localNu = held;
+        nuCell = c;
+        nuMaterial = heldMaterial;
+      }
+    });
     nu = comm_.max(localNu);
   }
   const double diffusive = 2.0 * nu * inv2 + rRate;

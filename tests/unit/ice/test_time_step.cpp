@@ -241,3 +241,65 @@ TEST(IceTimeStep, SemiImplicitWithTwoFluidsStartsFromTheExplicitStepAndGrows) {
         << pressure;
   }
 }
+
+// A viscous fluid held to the cell's other materials by the momentum exchange: its viscous update
+// reaches the cell's velocity only through the exchange, so the step is bounded by the mixture's
+// nu = mu theta_r V / M, not by the fluid's own mu / rho_r, once sum_s theta_s K_rs >= 4 mu
+// sum_d dx_d^-2 (ice_solver.cpp, stableTimeStep). A periodic 8 x 8 box, 10 % of a gas of viscosity
+// mu = 1000 Pa s in 90 % of an inviscid one, both at rho = 1 (nu_r = 1000 m^2/s, the mixture's 100).
+namespace {
+core::Scene heldTraceBox(double K) {
+  core::Scene s = checkerboardBox(0.0);
+  s.materials = {test::idealGas("viscous"), test::idealGas("inviscid")};
+  s.materials[0].viscosity = 1000.0;
+  s.geometry = {test::region("mix", test::box({0, 0, 0}, {1, 1, 1}), {{"viscous", 0.1}, {"inviscid", 0.9}}, 1e5, 1.0)};
+  s.ice.exchange_momentum = K;
+  return s;
+}
+void setHeldCheckerboard(ice::IceSolver& sol, double U) {
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    for (auto& m : sol.state().mat) m.vel(i, j, k, 0) = (i + j) % 2 == 0 ? U : -U;
+  });
+  sol.computeEquilibriumPressure();
+}
+double maxMixtureSpeed(const ice::IceSolver& sol) {
+  double most = 0;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    double p = 0, m = 0;
+    for (const auto& mat : sol.state().mat) p += mat.mass(i, j, k) * mat.vel(i, j, k, 0), m += mat.mass(i, j, k);
+    most = std::max(most, std::abs(p / m));
+  });
+  return test::comm().max(most);
+}
+}  // namespace
+
+TEST(IceTimeStep, AViscousFluidHeldByTheExchangeIsBoundedByTheMixture) {
+  const double inv2 = 2 / (0.1 * 0.1);
+  ice::IceSolver held(heldTraceBox(1e15), test::comm());
+  setHeldCheckerboard(held, 1.0);
+  const double mixture = 1.0 / (2 * 1000.0 * 0.1 * inv2);  // nu = mu theta / rho_mix = 100 m^2/s
+  EXPECT_NEAR(held.stableTimeStep(), mixture, 1e-9 * mixture);
+  // Without the exchange the fluid diffuses on its own: nu = mu / rho_r = 1000 m^2/s.
+  ice::IceSolver alone(heldTraceBox(0.0), test::comm());
+  setHeldCheckerboard(alone, 1.0);
+  EXPECT_NEAR(alone.stableTimeStep(), 1.0 / (2 * 1000.0 * inv2), 1e-9 / (2 * 1000.0 * inv2));
+  // An exchange too weak to hold it (sum_s theta_s K_rs = 0.9 K below 4 mu sum_d dx_d^-2 = 8e5):
+  // its own bound.
+  ice::IceSolver weak(heldTraceBox(5e5), test::comm());
+  setHeldCheckerboard(weak, 1.0);
+  EXPECT_NEAR(weak.stableTimeStep(), 1.0 / (2 * 1000.0 * inv2), 1e-9 / (2 * 1000.0 * inv2));
+  // The held fluid's checkerboard keeps its amplitude at the mixture's step (ten times the fluid's
+  // own bound) and grows beyond it (factor 1 - 2.4 per step at 1.2 times it).
+  for (int n = 0; n < 50; ++n) stepWith(held, mixture);
+  EXPECT_LE(maxMixtureSpeed(held), 1.0 + 1e-6);
+  EXPECT_GT(maxMixtureSpeed(held), 0.5);
+  for (const auto& m : held.state().mat) {  // each fluid's own velocity stays with the mixture's
+    double most = 0;
+    core::forEach(held.ownedBox(), [&](int i, int j, int k) { most = std::max(most, std::abs(m.vel(i, j, k, 0))); });
+    EXPECT_LE(most, 1.0 + 1e-6) << m.name;
+  }
+  ice::IceSolver over(heldTraceBox(1e15), test::comm());
+  setHeldCheckerboard(over, 1.0);
+  for (int n = 0; n < 20; ++n) stepWith(over, 1.2 * mixture);
+  EXPECT_GT(maxMixtureSpeed(over), 100.0);
+}
