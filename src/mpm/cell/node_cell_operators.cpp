@@ -531,8 +531,11 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   Grid& g = grid_;
   if (nodeScratch_.npts() == 0)
     nodeScratch_ = Field("node_scratch", Centering::Node, g.box(), g.velocityL.ncomp(), Grid::kGhost);
-  while (nodeEnergy_.size() < energies.size())
-    nodeEnergy_.emplace_back("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
+  if (nodeThermal_.npts() == 0) {
+    nodeThermal_ = Field("node_thermal", Centering::Node, g.box(), 1, Grid::kGhost);
+    nodeCooling_ = Field("node_cooling", Centering::Node, g.box(), 1, Grid::kGhost);
+  }
+  if (nodeEnergy_.empty()) nodeEnergy_.emplace_back("node_energy", Centering::Node, g.box(), 1, Grid::kGhost);
   // Every cell's energy goes by the transpose of the node-to-cell average that made the cell mass
   // ICE saw: to its corner nodes in proportion to share x (their particle mass of m), and from a
   // node to its particles in proportion to m_p w_ip. So every joule reaches a particle, and a
@@ -540,56 +543,79 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   // dividing a cell's energy by the mass of the particles inside it instead sent a particle that
   // carries a small part of a smeared cell's mass many times its cell's change (the added-mass
   // slab's rubber at -640 K in step 1, the seed cylinder's wall at -0.03 K at K = 0).
-  // 1. The particles' mass at each node, m_p w_ip summed as they are (no mirror images): the
-  //    weights of the deposit below, so that a node hands out exactly what it received. One pass
-  //    for all the fields (the particles do not move between them).
+  // A cell's negative energy (cooling) goes the same way with the particles' thermal energy
+  // m_p cv T_p in place of their mass: each particle then loses the same fraction of its thermal
+  // energy, T_p (1 + sum_i w_ip E_i / W_i) with W the nodes' thermal energy, so no particle
+  // crosses 0 K unless its cells lose more than all their solid's thermal energy. With the mass
+  // weights every particle lost the same dT, and a particle that stays where the cells cool every
+  // step (the tip of a solid driven through a liquid, where the Lagrangian phase's energy
+  // correction is negative: docs/slides.md) reached 0 K while its neighbours were at 240 K.
+  // 1. The particles' mass and thermal energy at each node, m_p w_ip and m_p cv T_p w_ip summed as
+  //    they are (no mirror images): the weights of the deposit below, so that a node hands out
+  //    exactly what it received. One pass for all the fields (the particles do not move between them).
   Field& mw = nodeScratch_;
   mw.fill(0.0);
+  nodeThermal_.fill(0.0);
   const GridGeom geom = g.geom();
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     double* w = mw.data(0);
+    double* wt = nodeThermal_.data();
     for (std::size_t i = b; i < e; ++i) {
       st.compute(p_, i, geom);
-      const double m = p_.mass[i];
-      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) { w[k] += m * wk; });
+      const double m = p_.mass[i], mt = m * cv * std::max(p_.temperature[i], 0.0);
+      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
+        w[k] += m * wk;
+        wt[k] += mt * wk;
+      });
     }
   });
-  g.sumAndFill({&mw});
-  // 2. Each cell's energy to its corner nodes in proportion to their share of that mass.
-  std::size_t f = 0;
+  g.sumAndFill({&mw, &nodeThermal_});
+  // 2. Each cell's energy (the fields summed in their order) to its corner nodes in proportion to
+  //    their share of that mass, or of that thermal energy where the sum is negative and its nodes
+  //    hold thermal energy.
   const CellCorners& cc = corners(mw, "addCellEnergy");
   const double* mwd = mw.data(0);
-  for (const Field* energy : energies) {
-    Field& ne = nodeEnergy_[f++];
-    ne.fill(0.0);
-    corners(ne, "addCellEnergy");
-    double* ned = ne.data();
-    core::forEach(cells_, [&](int i, int j, int k) {
-      const double E = (*energy)(i, j, k);
-      if (E == 0.0) return;
-      double mc = 0;
-      cc.forCorners(i, j, k, [&](std::int64_t n, double share) { mc += share * mwd[n]; });
-      if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
-      cc.forCorners(i, j, k, [&](std::int64_t n, double share) { ned[n] += E * share * mwd[n] / mc; });
-    });
-    g.sumAndFill({&ne});
-  }
-  // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i, the fields in turn.
-  const std::size_t nf = energies.size();
+  const double* mtd = nodeThermal_.data();
+  Field& ne = nodeEnergy_.front();
+  ne.fill(0.0);
+  nodeCooling_.fill(0.0);
+  corners(ne, "addCellEnergy");
+  double* ned = ne.data();
+  double* cool = nodeCooling_.data();
+  core::forEach(cells_, [&](int i, int j, int k) {
+    double E = 0;
+    for (const Field* energy : energies) E += (*energy)(i, j, k);
+    if (E == 0.0) return;
+    if (E < 0) {
+      double tc = 0;
+      cc.forCorners(i, j, k, [&](std::int64_t n, double share) { tc += share * mtd[n]; });
+      if (tc > 0) {
+        cc.forCorners(i, j, k, [&](std::int64_t n, double share) { cool[n] += E * share * mtd[n] / tc; });
+        return;
+      }
+    }
+    double mc = 0;
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) { mc += share * mwd[n]; });
+    if (!(mc > 0)) return;  // no particle reaches the cell's nodes (its mass is zero as well)
+    cc.forCorners(i, j, k, [&](std::int64_t n, double share) { ned[n] += E * share * mwd[n] / mc; });
+  });
+  g.sumAndFill({&ne, &nodeCooling_});
+  // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i, and the cooling
+  //    dT_p = T_p sum_i w_ip C_i / W_i (T_p before the step's energy, as W was made).
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     const double* w = mw.data(0);
     for (std::size_t i = b; i < e; ++i) {
       st.compute(p_, i, geom);
-      for (std::size_t q = 0; q < nf; ++q) {
-        const double* en = nodeEnergy_[q].data();
-        double h = 0;  // energy per unit mass of the particle
-        st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
-          if (w[k] > 0) h += wk * en[k] / w[k];
-        });
-        p_.temperature[i] += h / cv;
-      }
+      double h = 0;  // energy per unit mass of the particle
+      double r = 0;  // the fraction of its thermal energy it gains (negative)
+      st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
+        if (w[k] > 0) h += wk * ned[k] / w[k];
+        if (mtd[k] > 0) r += wk * cool[k] / mtd[k];
+      });
+      const double T0 = p_.temperature[i];
+      p_.temperature[i] = T0 + h / cv + std::max(T0, 0.0) * r;
     }
   });
 }

@@ -310,7 +310,8 @@ class NodeCellOperators {
   core::Field dv_, gotScratch_;                // applyCellMomentumIncrement() scratch
   core::Field nodeValue_;                      // cellToParticles() node value and weight
   core::Field nodeScratch_;                    // applyCellMomentumIncrement(), addCellEnergy() scratch
-  std::vector<core::Field> nodeEnergy_;        // addCellEnergy() scratch, one per field
+  std::vector<core::Field> nodeEnergy_;        // addCellEnergy() scratch (one field)
+  core::Field nodeThermal_, nodeCooling_;      // addCellEnergy(): the nodes' thermal energy, their cooling
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
   std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)

@@ -298,34 +298,84 @@ TEST(NodeCellOperators, UniformPressureStressIsASurfaceTraction) {
   }
 }
 
-// addCellEnergy with several fields (one pass over the particles for the node weights, one for the
-// deposit: the coupled step hands the exchange heat and the kinetic deficit at once) gives every
-// particle the temperature of the calls in turn, bit for bit.
-TEST(NodeCellOperators, CellEnergyOfSeveralFieldsIsTheCallsInTurn) {
+// addCellEnergy with several fields (the coupled step hands the exchange heat and the kinetic
+// deficit at once) distributes their per-cell sum: the same temperatures, bit for bit, as one call
+// with the summed field (a cell's heating and cooling are not told apart field by field).
+TEST(NodeCellOperators, CellEnergyOfSeveralFieldsIsTheirSum) {
   for (const char* shape : {"linear", "bspline2"})
     for (int dim : {2, 3}) {
       auto s = scene(dim);
       s.mpm.shape_function = shape;
-      MpmSolver inTurn(s, self()), atOnce(s, self());
-      start(inTurn);
+      MpmSolver summed(s, self()), atOnce(s, self());
+      start(summed);
       start(atOnce);
-      const core::Box owned = inTurn.decomposition().cellBox(0);
-      core::Field heat("heat", core::Centering::Cell, owned, 1, 0, 0.0), deficit = heat;
+      const core::Box owned = summed.decomposition().cellBox(0);
+      core::Field heat("heat", core::Centering::Cell, owned, 1, 0, 0.0), deficit = heat, total = heat;
       core::forEach(owned, [&](int i, int j, int k) {
         heat(i, j, k) = 10.0 + 3.0 * i - 2.0 * j + k;  // every cell, the empty ones too
-        deficit(i, j, k) = 0.1 * std::sin(1.0 + i + 2.0 * j + 3.0 * k);
+        deficit(i, j, k) = 0.1 * std::sin(1.0 + i + 2.0 * j + 3.0 * k) - (i == 3 ? 40.0 : 0.0);  // some cells cool
+        total(i, j, k) = 0.0 + heat(i, j, k) + deficit(i, j, k);
       });
-      inTurn.cells().addCellEnergy(0, heat);
-      inTurn.cells().addCellEnergy(0, deficit);
+      summed.cells().addCellEnergy(0, total);
       atOnce.cells().addCellEnergy(0, {&heat, &deficit});
-      const auto &a = inTurn.particles(), &b = atOnce.particles();
+      const auto &a = summed.particles(), &b = atOnce.particles();
       ASSERT_EQ(a.size(), b.size());
-      std::size_t warmed = 0;
+      std::size_t warmed = 0, cooled = 0;
       for (std::size_t i = 0; i < a.size(); ++i) {
         EXPECT_EQ(a.temperature[i], b.temperature[i]) << shape << " dim " << dim << " particle " << i;
-        warmed += a.temperature[i] != 350.0;
+        warmed += a.temperature[i] > 350.0;
+        cooled += a.temperature[i] < 350.0;
       }
-      EXPECT_EQ(warmed, a.size()) << shape << " dim " << dim;
+      EXPECT_GT(warmed, 0u) << shape << " dim " << dim;
+      EXPECT_GT(cooled, 0u) << shape << " dim " << dim;
+      EXPECT_EQ(warmed + cooled, a.size()) << shape << " dim " << dim;
+    }
+}
+
+// A cell's negative energy (cooling) goes to its particles in proportion to their thermal energy
+// m_p cv T_p: each loses the same fraction as its nodes' (a weighted mean), so a particle much
+// colder than its neighbours is not driven below 0 K by the cooling they share, and the energy
+// given is the energy taken, to round-off. Here the cells take a fifth of the block's thermal
+// energy: with the mass weights every particle lost about 70 K, and the one at 1 K went to -69 K.
+TEST(NodeCellOperators, CellCoolingTakesTheSameFractionOfEveryParticlesThermalEnergy) {
+  for (const char* shape : {"linear", "bspline2"})
+    for (int dim : {2, 3}) {
+      auto s = scene(dim);
+      s.mpm.shape_function = shape;
+      MpmSolver solver(s, self());
+      start(solver);
+      auto& p = solver.particles();
+      const double cv = solver.scene().materials[0].specific_heat;
+      const std::size_t cold = p.size() / 2;
+      p.temperature[cold] = 1.0;
+      double thermal = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) thermal += p.mass[i] * cv * p.temperature[i];
+      // The block's cells (centres inside it) share -0.2 of its thermal energy alike.
+      const core::Box owned = solver.decomposition().cellBox(0);
+      const core::Mesh& mesh = solver.scene().mesh;
+      core::Field E("cooling", core::Centering::Cell, owned, 1, 0, 0.0);
+      int inside = 0;
+      auto inBlock = [&](int i, int j, int k) {
+        const double x = mesh.cellCenter(0, i), y = mesh.cellCenter(1, j), z = dim == 3 ? mesh.cellCenter(2, k) : 0.0;
+        return x > 0.5 && x < 1.25 && y > 0.5 && y < 1.0 && (dim == 2 || (z > 0.5 && z < 1.0));
+      };
+      core::forEach(owned, [&](int i, int j, int k) { inside += inBlock(i, j, k); });
+      ASSERT_GT(inside, 0);
+      core::forEach(owned, [&](int i, int j, int k) {
+        if (inBlock(i, j, k)) E(i, j, k) = -0.2 * thermal / inside;
+      });
+      std::vector<double> before(p.temperature.begin(), p.temperature.end());
+      solver.cells().addCellEnergy(0, E);
+      double given = 0, mostLost = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        given += p.mass[i] * cv * (p.temperature[i] - before[i]);
+        EXPECT_GT(p.temperature[i], 0.0) << shape << " dim " << dim << " particle " << i;
+        if (i != cold) mostLost = std::max(mostLost, 1.0 - p.temperature[i] / before[i]);
+      }
+      EXPECT_NEAR(given, -0.2 * thermal, 1e-12 * thermal) << shape << " dim " << dim;
+      const double coldLost = 1.0 - p.temperature[cold] / before[cold];
+      EXPECT_GT(coldLost, 0.0) << shape << " dim " << dim;
+      EXPECT_LE(coldLost, mostLost * (1 + 1e-12)) << shape << " dim " << dim;
     }
 }
 
