@@ -9,7 +9,11 @@ current inner radius and -(p_amb - p_ref) on the outer one. Solved by shooting o
 
 Usage: cylinder_finite_strain.py RUN.h5 P DX [K G] [RI RO PREF PAMB]
   RUN.h5: the last output step (mpmice); P: the cavity pressure cylinder_lame prints.
-Prints Eq. 13 and the bands (0-1, 1-2, 2-4, 4-8, >= 8 dx from the nearer surface) for both references.
+Prints Eq. 13 and the bands (0-1, 1-2, 2-4, 4-8, >= 8 dx from the nearer surface) for both references,
+and the loads the wall carries: the Lame form sigma_r = A - B / r^2, sigma_theta = A + B / r^2 fitted
+(least squares) to the particles >= 2 dx from both surfaces, read as the inner and outer gauge loads
+(against the stress-free state) that make it, beside the exact ones (P - p_ref, p_amb - p_ref) and
+beside the same fit of the finite-strain reference (what finite strain alone moves them by).
 """
 import sys
 
@@ -42,7 +46,17 @@ def finite_strain_annulus(P, K, G, ri, ro, pref, pamb):
     et = np.log(r / R)
     er = (sr - lam * et) / M
     st = lam * er + M * et
-    return r, sr + st  # the sum at current radius r
+    return r, sr, st  # the radial and hoop stresses at current radius r
+
+
+def lame_loads(r, sr, st, ri, ro):
+    """The inner and outer gauge loads (Pi, Po) of the Lame form fitted to sigma_r, sigma_theta at r."""
+    M = np.vstack([np.concatenate([np.ones_like(r)] * 2), np.concatenate([-1 / r**2, 1 / r**2])]).T
+    (A, B), *_ = np.linalg.lstsq(M, np.concatenate([sr, st]), rcond=None)
+    k = ro**2 - ri**2
+    d = B * k / (ri**2 * ro**2)  # Pi - Po
+    Pi = (A * k - ro**2 * d) / (ri**2 - ro**2)
+    return Pi, Pi - d
 
 
 def main():
@@ -59,7 +73,8 @@ def main():
     r = np.hypot(x[:, 0], x[:, 1])
     total = s[:, 0] + s[:, 1]
     S = 2 * ((P - pref) * ri**2 - (pamb - pref) * ro**2) / (ro**2 - ri**2)
-    rr, ssum = finite_strain_annulus(P, K, G, ri, ro, pref, pamb)
+    rr, rsr, rst = finite_strain_annulus(P, K, G, ri, ro, pref, pamb)
+    ssum = rsr + rst
     refs = [("small-strain", np.full_like(r, S)), ("finite-strain", np.interp(r, rr, ssum))]
     d = np.minimum(r - ri, ro - r) / dx
     bands = [(0, 1), (1, 2), (2, 4), (4, 8), (8, 1e9)]
@@ -71,6 +86,16 @@ def main():
         print("%-13s Eq. 13 %.5f | bands %s | signed %s" % (name, np.abs(e).mean(), band, signed))
     for R in (ri, 0.5 * (ri + ro), ro):
         print("finite-strain sum at r = %.3f: %+.4f %% of the small-strain S" % (R, 100 * (np.interp(R, rr, ssum) / S - 1)))
+    c, sn = x[:, 0] / r, x[:, 1] / r
+    sig_r = s[:, 0] * c * c + s[:, 1] * sn * sn + 2 * s[:, 3] * c * sn  # datasets: xx, yy, zz, xy, yz, xz
+    sig_t = s[:, 0] * sn * sn + s[:, 1] * c * c - 2 * s[:, 3] * c * sn
+    inner = d >= 2
+    Pi, Po = lame_loads(r[inner], sig_r[inner], sig_t[inner], ri, ro)
+    keep = (rr >= ri + 2 * dx) & (rr <= ro - 2 * dx)
+    Fi, Fo = lame_loads(rr[keep], rsr[keep], rst[keep], ri, ro)
+    print("loads the wall carries (Lame fit, >= 2 dx from both surfaces): inner %.6e Pa (P - p_ref %.6e: %+.1f Pa), "
+          "outer %.6e Pa (p_amb - p_ref %.6e: %+.1f Pa); the finite-strain reference's fit: %+.1f / %+.1f Pa"
+          % (Pi, P - pref, Pi - (P - pref), Po, pamb - pref, Po - (pamb - pref), Fi - (P - pref), Fo - (pamb - pref)))
 
 
 if __name__ == "__main__":
