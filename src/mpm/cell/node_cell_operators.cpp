@@ -557,6 +557,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   mw.fill(0.0);
   nodeThermal_.fill(0.0);
   const GridGeom geom = g.geom();
+  double thermal = 0;  // the material's thermal energy on this rank
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     double* w = mw.data(0);
@@ -564,6 +565,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
     for (std::size_t i = b; i < e; ++i) {
       st.compute(p_, i, geom);
       const double m = p_.mass[i], mt = m * cv * std::max(p_.temperature[i], 0.0);
+      thermal += mt;
       st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
         w[k] += m * wk;
         wt[k] += mt * wk;
@@ -583,6 +585,10 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   corners(ne, "addCellEnergy");
   double* ned = ne.data();
   double* cool = nodeCooling_.data();
+  // A cell takes at most kMaxCellCooling of its nodes' thermal energy (as shared to it); the rest,
+  // counted, goes to every particle of the material in proportion to its thermal energy (below).
+  double spread = 0;
+  long capped = 0;
   core::forEach(cells_, [&](int i, int j, int k) {
     double E = 0;
     for (const Field* energy : energies) E += (*energy)(i, j, k);
@@ -591,6 +597,11 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
       double tc = 0;
       cc.forCorners(i, j, k, [&](std::int64_t n, double share) { tc += share * mtd[n]; });
       if (tc > 0) {
+        if (E < -kMaxCellCooling * tc) {
+          spread += E + kMaxCellCooling * tc;
+          E = -kMaxCellCooling * tc;
+          ++capped;
+        }
         cc.forCorners(i, j, k, [&](std::int64_t n, double share) { cool[n] += E * share * mtd[n] / tc; });
         return;
       }
@@ -601,6 +612,18 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
     cc.forCorners(i, j, k, [&](std::int64_t n, double share) { ned[n] += E * share * mwd[n] / mc; });
   });
   g.sumAndFill({&ne, &nodeCooling_});
+  // The cooling beyond the cells' caps, as a fraction of the material's thermal energy.
+  double everywhere = 0;
+  {
+    std::vector<double> v{spread, static_cast<double>(capped), thermal};
+    if (comm_ != nullptr) comm_->sumInPlace(v);
+    if (v[0] < 0 && v[2] > 0) {
+      everywhere = v[0] / v[2];
+      spreadCooling_.energy += v[0];
+      spreadCooling_.cells += static_cast<long>(v[1]);
+      ++spreadCooling_.steps;
+    }
+  }
   // 3. Each node's energy to its particles: dE_p = m_p sum_i w_ip E_i / mw_i, and the cooling
   //    dT_p = T_p sum_i w_ip C_i / W_i (T_p before the step's energy, as W was made).
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -615,7 +638,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
         if (mtd[k] > 0) r += wk * cool[k] / mtd[k];
       });
       const double T0 = p_.temperature[i];
-      p_.temperature[i] = T0 + h / cv + std::max(T0, 0.0) * r;
+      p_.temperature[i] = T0 + h / cv + std::max(T0, 0.0) * (r + everywhere);
     }
   });
 }

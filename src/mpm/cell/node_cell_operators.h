@@ -229,6 +229,15 @@ class NodeCellOperators {
   /// The same for several fields at once (one pass over the particles for the node weights, one
   /// for the deposit; each particle takes the fields' energies in their order, as calls in turn).
   void addCellEnergy(int material, std::initializer_list<const core::Field*> energies);
+  /// The communicator of addCellEnergy's sums over the ranks (the solver's; it must outlive this).
+  void setComm(const core::Comm& comm) { comm_ = &comm; }
+  /// The cooling addCellEnergy gave to whole materials because a cell's was beyond
+  /// kMaxCellCooling of its solid's thermal energy there (run totals; the same on every rank).
+  struct SpreadCooling {
+    double energy = 0;  // [J], <= 0
+    long cells = 0, steps = 0;
+  };
+  [[nodiscard]] const SpreadCooling& spreadCooling() const { return spreadCooling_; }
   /// The face transport of the node-to-cell average of material m's mass (solid_face_transport.cpp):
   /// per cell face normal to d, at the low face of each owned cell (component d, 3 components),
   /// the face density D_f = sum_p m_p H'_f(x_p,d) g_f(x_p) / A_f [kg/m^3] and the face mass flux
@@ -312,6 +321,8 @@ class NodeCellOperators {
   core::Field nodeScratch_;                    // applyCellMomentumIncrement(), addCellEnergy() scratch
   std::vector<core::Field> nodeEnergy_;        // addCellEnergy() scratch (one field)
   core::Field nodeThermal_, nodeCooling_;      // addCellEnergy(): the nodes' thermal energy, their cooling
+  const core::Comm* comm_ = nullptr;           // setComm(): addCellEnergy's sums over the ranks
+  SpreadCooling spreadCooling_;
   std::vector<core::Field> deficit_;           // per material: kineticDeficit()
   std::vector<ParticleCells> particleCells_;   // per material: spreadCellVectors()
   std::vector<double> cellVector_;             // spreadCellVectors() scratch (3 per owned cell)

@@ -100,6 +100,7 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
   cells_ = std::make_unique<NodeCellOperators>(scene_, decomp_.cellBox(comm_.rank()), *grid_, bcs_, p_, shape_,
                                                massFloor_);
   cells_->setWorkMassFloor(accelFloor_);
+  cells_->setComm(comm_);
   nodeWeight_.assign(static_cast<std::size_t>(grid_->numNodes()), 0.0);
   {
     const GridGeom geom = grid_->geom();

@@ -298,6 +298,13 @@ TEST(NodeCellOperators, UniformPressureStressIsASurfaceTraction) {
   }
 }
 
+// The particles' thermal energy sum m_p cv T_p [J].
+double heat(const mpm::ParticleSet& p, double cv) {
+  double h = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) h += p.mass[i] * cv * p.temperature[i];
+  return h;
+}
+
 // addCellEnergy with several fields (the coupled step hands the exchange heat and the kinetic
 // deficit at once) distributes their per-cell sum: the same temperatures, bit for bit, as one call
 // with the summed field (a cell's heating and cooling are not told apart field by field).
@@ -348,8 +355,7 @@ TEST(NodeCellOperators, CellCoolingTakesTheSameFractionOfEveryParticlesThermalEn
       const double cv = solver.scene().materials[0].specific_heat;
       const std::size_t cold = p.size() / 2;
       p.temperature[cold] = 1.0;
-      double thermal = 0;
-      for (std::size_t i = 0; i < p.size(); ++i) thermal += p.mass[i] * cv * p.temperature[i];
+      const double thermal = heat(p, cv);
       // The block's cells (centres inside it) share -0.2 of its thermal energy alike.
       const core::Box owned = solver.decomposition().cellBox(0);
       const core::Mesh& mesh = solver.scene().mesh;
@@ -570,4 +576,38 @@ TEST(NodeCellOperators, SolidContinuesBeyondOpenFaces) {
         });
         normalForce("moved by 0.1 dx");
       }
+}
+
+// A cell that would lose more than kMaxCellCooling of its solid's thermal energy in one call takes
+// that much; the rest goes to every particle of the material in proportion to its thermal energy,
+// and is counted: the particles stay above 0 K and the energy given is still the energy taken.
+TEST(NodeCellOperators, CellCoolingBeyondHalfItsHeatGoesToTheWholeMaterial) {
+  for (const char* shape : {"linear", "bspline2"})
+    for (int dim : {2, 3}) {
+      auto s = scene(dim);
+      s.mpm.shape_function = shape;
+      MpmSolver solver(s, self());
+      start(solver);
+      const double cv = solver.scene().materials[0].specific_heat;
+      auto& p = solver.particles();
+      const double thermal = heat(p, cv);
+      const core::Box owned = solver.decomposition().cellBox(0);
+      core::Field E("cooling", core::Centering::Cell, owned, 1, 0, 0.0);
+      E(3, 2, dim == 3 ? 2 : 0) = -0.3 * thermal;  // one cell inside the block: far beyond its own heat
+      std::vector<double> before(p.temperature.begin(), p.temperature.end());
+      EXPECT_EQ(solver.cells().spreadCooling().cells, 0);
+      solver.cells().addCellEnergy(0, E);
+      double given = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        given += p.mass[i] * cv * (p.temperature[i] - before[i]);
+        EXPECT_GT(p.temperature[i], 0.0) << shape << " dim " << dim << " particle " << i;
+        EXPECT_LT(p.temperature[i], before[i]) << shape << " dim " << dim << " particle " << i;  // every one shares it
+      }
+      EXPECT_NEAR(given, -0.3 * thermal, 1e-12 * thermal) << shape << " dim " << dim;
+      const auto& spread = solver.cells().spreadCooling();
+      EXPECT_EQ(spread.cells, 1) << shape << " dim " << dim;
+      EXPECT_EQ(spread.steps, 1) << shape << " dim " << dim;
+      EXPECT_LT(spread.energy, -0.2 * thermal) << shape << " dim " << dim;  // most of it: the cell holds little
+      EXPECT_GT(spread.energy, -0.3 * thermal) << shape << " dim " << dim;
+    }
 }

@@ -20,6 +20,7 @@
 #include "couplings/volume/common/run_output.h"
 #include "couplings/volume/schedule/coupling_schedule.h"
 #include "ice/solver/health_check.h"
+#include "mpm/mpm_constants.h"
 #include "mpm/solver/health_check.h"
 #include "mpm/solver/probes.h"
 
@@ -257,6 +258,12 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
   if (sides.solid) {
     const mpm::ParticleOutflow gone = sides.solid->solver().outflow();  // collective
     if (comm.root() && gone.count > 0) log << mpm::outflowSummary(gone) << std::flush;
+    const auto& spread = sides.solid->solver().cells().spreadCooling();  // the same on every rank
+    if (comm.root() && spread.cells > 0)
+      log << "  solid heat: in " << spread.cells << " cell-steps (" << spread.steps << " steps) a cell's cooling was "
+          << "beyond " << mpm::kMaxCellCooling << " of its solid's thermal energy; " << -spread.energy
+          << " J of it went to the whole material in proportion to the particles' thermal energy\n"
+          << std::flush;
   }
   if (comm.root() && sides.solid) {
     log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n
