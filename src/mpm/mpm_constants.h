@@ -22,11 +22,12 @@ inline constexpr double kReferencePressure = 101325.0;
 /// Pinned by: tests/verification/coupled/test_cylinder_annulus.cpp (seed cylinder at dx 0.05:
 /// 1.0 gives 0.0501, 2.0 0.0510, interior bias -0.5 % and +0.2 %; docs/coupling.md).
 inline constexpr double kSurfaceLayerCells = 2.0;
-/// The most of its solid's thermal energy (as its corner nodes share it to the cell) a cell's
-/// cooling takes in one step (NodeCellOperators::addCellEnergy): the rest goes to every particle of
-/// the material in proportion to its thermal energy, counted (spreadCooling()), so that no
-/// particle's temperature reaches 0 K while the material has heat.
-inline constexpr double kMaxCellCooling = 0.5;
+/// A cell's cooling (NodeCellOperators::addCellEnergy) takes its solid's thermal energy down to
+/// this share of the material's mean temperature at most (the cell's particle mass at that
+/// temperature); the rest goes to every particle of the material in proportion to its thermal
+/// energy, counted (spreadCooling()), so that no region of a solid is drained by a cooling that
+/// keeps arriving (the energy correction at a solid's leading edge, docs/coupling.md).
+inline constexpr double kMinCellTemperatureShare = 0.5;
 
 /// [K] The temperature of the absent-solid state (a cell the solid does not reach still needs a
 /// valid state for ICE's equilibrium pressure; its volume fraction is zero).

@@ -546,7 +546,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   // A cell's negative energy (cooling) goes the same way with the particles' thermal energy
   // m_p cv T_p in place of their mass: each particle then loses the same fraction of its thermal
   // energy, T_p (1 + sum_i w_ip E_i / W_i) with W the nodes' thermal energy, so no particle
-  // crosses 0 K unless its cells lose more than all their solid's thermal energy. With the mass
+  // crosses 0 K; and a cell's solid is cooled down to a floor only (below). With the mass
   // weights every particle lost the same dT, and a particle that stays where the cells cool every
   // step (the tip of a solid driven through a liquid, where the Lagrangian phase's energy
   // correction is negative: docs/slides.md) reached 0 K while its neighbours were at 240 K.
@@ -557,7 +557,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   mw.fill(0.0);
   nodeThermal_.fill(0.0);
   const GridGeom geom = g.geom();
-  double thermal = 0;  // the material's thermal energy on this rank
+  double thermal = 0, mass = 0;  // the material's thermal energy and mass on this rank
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
     kernels::Stencil<S, D> st;
     double* w = mw.data(0);
@@ -566,6 +566,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
       st.compute(p_, i, geom);
       const double m = p_.mass[i], mt = m * cv * std::max(p_.temperature[i], 0.0);
       thermal += mt;
+      mass += m;
       st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
         w[k] += m * wk;
         wt[k] += mt * wk;
@@ -573,6 +574,11 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
     }
   });
   g.sumAndFill({&mw, &nodeThermal_});
+  // The floor a cell's cooling keeps its solid above: kMinCellTemperatureShare of the material's
+  // mean temperature.
+  std::vector<double> totals{thermal, mass};
+  if (comm_ != nullptr) comm_->sumInPlace(totals);
+  const double floorHeat = totals[1] > 0 ? kMinCellTemperatureShare * totals[0] / totals[1] : 0.0;  // cv T_floor
   // 2. Each cell's energy (the fields summed in their order) to its corner nodes in proportion to
   //    their share of that mass, or of that thermal energy where the sum is negative and its nodes
   //    hold thermal energy.
@@ -585,8 +591,10 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   corners(ne, "addCellEnergy");
   double* ned = ne.data();
   double* cool = nodeCooling_.data();
-  // A cell takes at most kMaxCellCooling of its nodes' thermal energy (as shared to it); the rest,
-  // counted, goes to every particle of the material in proportion to its thermal energy (below).
+  // A cell's cooling takes its solid's thermal energy (as its corner nodes share it to the cell)
+  // down to the floor at most; the rest, counted, goes to every particle of the material in
+  // proportion to its thermal energy (below). A fraction per step would not do: where the cells
+  // cool every step it halves, and halves again (the lattice's strut tip reached 1e-13 K).
   double spread = 0;
   long capped = 0;
   core::forEach(cells_, [&](int i, int j, int k) {
@@ -597,12 +605,15 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
       double tc = 0;
       cc.forCorners(i, j, k, [&](std::int64_t n, double share) { tc += share * mtd[n]; });
       if (tc > 0) {
-        if (E < -kMaxCellCooling * tc) {
-          spread += E + kMaxCellCooling * tc;
-          E = -kMaxCellCooling * tc;
+        double floor = 0;
+        cc.forCorners(i, j, k, [&](std::int64_t n, double share) { floor += share * mwd[n] * floorHeat; });
+        const double available = std::max(tc - floor, 0.0);
+        if (E < -available) {
+          spread += E + available;
+          E = -available;
           ++capped;
         }
-        cc.forCorners(i, j, k, [&](std::int64_t n, double share) { cool[n] += E * share * mtd[n] / tc; });
+        if (E < 0) cc.forCorners(i, j, k, [&](std::int64_t n, double share) { cool[n] += E * share * mtd[n] / tc; });
         return;
       }
     }
@@ -615,8 +626,12 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
   // The cooling beyond the cells' caps, as a fraction of the material's thermal energy.
   double everywhere = 0;
   {
-    std::vector<double> v{spread, static_cast<double>(capped), thermal};
-    if (comm_ != nullptr) comm_->sumInPlace(v);
+    std::vector<double> v{spread, static_cast<double>(capped), totals[0]};
+    if (comm_ != nullptr) {
+      std::vector<double> w{v[0], v[1]};
+      comm_->sumInPlace(w);
+      v[0] = w[0], v[1] = w[1];
+    }
     if (v[0] < 0 && v[2] > 0) {
       everywhere = v[0] / v[2];
       spreadCooling_.energy += v[0];

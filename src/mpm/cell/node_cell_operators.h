@@ -226,13 +226,15 @@ class NodeCellOperators {
   /// it on) and a particle's temperature change is a weighted mean of its cells' dE / (m_c cv),
   /// never more (the cell mass ICE sees is smeared over the surface cells). Collective.
   void addCellEnergy(int material, const core::Field& energy);
-  /// The same for several fields at once (one pass over the particles for the node weights, one
-  /// for the deposit; each particle takes the fields' energies in their order, as calls in turn).
+  /// The same for several fields at once: their per-cell sum (one pass over the particles for the
+  /// node weights, one for the deposit). A cell whose sum is negative (cooling) gives it by the
+  /// particles' thermal energy m_p cv T_p instead of their mass, and down to the floor of
+  /// kMinCellTemperatureShare of the material's mean temperature; the rest to the whole material.
   void addCellEnergy(int material, std::initializer_list<const core::Field*> energies);
   /// The communicator of addCellEnergy's sums over the ranks (the solver's; it must outlive this).
   void setComm(const core::Comm& comm) { comm_ = &comm; }
   /// The cooling addCellEnergy gave to whole materials because a cell's was beyond
-  /// kMaxCellCooling of its solid's thermal energy there (run totals; the same on every rank).
+  /// kMinCellTemperatureShare of the material's mean temperature (run totals; the same on every rank).
   struct SpreadCooling {
     double energy = 0;  // [J], <= 0
     long cells = 0, steps = 0;

@@ -261,7 +261,7 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
     const auto& spread = sides.solid->solver().cells().spreadCooling();  // the same on every rank
     if (comm.root() && spread.cells > 0)
       log << "  solid heat: in " << spread.cells << " cell-steps (" << spread.steps << " steps) a cell's cooling was "
-          << "beyond " << mpm::kMaxCellCooling << " of its solid's thermal energy; " << -spread.energy
+          << "beyond its solid's heat above " << mpm::kMinCellTemperatureShare << " of the material's mean temperature; " << -spread.energy
           << " J of it went to the whole material in proportion to the particles' thermal energy\n"
           << std::flush;
   }
