@@ -224,7 +224,8 @@ class NodeCellOperators {
   /// corner nodes in proportion to their particle mass of m, from a node to its particles in
   /// proportion to m_p w_ip. No energy is lost (a cell without particles of its own still hands
   /// it on) and a particle's temperature change is a weighted mean of its cells' dE / (m_c cv),
-  /// never more (the cell mass ICE sees is smeared over the surface cells). Collective.
+  /// never more (the cell mass ICE sees is smeared over the surface cells). A cooling cell goes by
+  /// thermal energy instead (below). Collective.
   void addCellEnergy(int material, const core::Field& energy);
   /// The same for several fields at once: their per-cell sum (one pass over the particles for the
   /// node weights, one for the deposit). A cell whose sum is negative (cooling) gives it by the
