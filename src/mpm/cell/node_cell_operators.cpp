@@ -623,6 +623,10 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
     cc.forCorners(i, j, k, [&](std::int64_t n, double share) { ned[n] += E * share * mwd[n] / mc; });
   });
   g.sumAndFill({&ne, &nodeCooling_});
+  // Whether any of this rank's nodes cool (most steps of most scenes: none; the deposit below then
+  // skips the cooling's division per node).
+  bool cooling = false;
+  for (std::int64_t n = 0, nn = nodeCooling_.npts(); n < nn && !cooling; ++n) cooling = cool[n] != 0.0;
   // The cooling beyond the cells' caps, as a fraction of the material's thermal energy.
   double everywhere = 0;
   {
@@ -650,7 +654,7 @@ void NodeCellOperators::addCellEnergy(int material, std::initializer_list<const 
       double r = 0;  // the fraction of its thermal energy it gains (negative)
       st.forNodes(geom, [&](std::int64_t k, double wk, double, double, double) {
         if (w[k] > 0) h += wk * ned[k] / w[k];
-        if (mtd[k] > 0) r += wk * cool[k] / mtd[k];
+        if (cooling && mtd[k] > 0) r += wk * cool[k] / mtd[k];
       });
       const double T0 = p_.temperature[i];
       p_.temperature[i] = T0 + h / cv + std::max(T0, 0.0) * (r + everywhere);
