@@ -22,9 +22,11 @@ Writes <out>/lattice_stress_strain.csv (curves), <out>/lattice_summary.csv and, 
 "Filled lattices"). Each shipped scene gets a window in its outer half wall (the 3D cell's side
 pore opening onto the specimen's free face, height pi d^2 / (4 a) so the open fraction of the face
 is the 3D cell's), a coarser mesh and a faster plate (--mesh, --rate: cost), quadratic B-splines
-(--shape) and 5 mm of room beside the specimen (--room); empty runs go through
+(--shape) and 9 mm of room beside the specimen (--room); empty runs go through
 mpm_solver, filled ones through mpmice with the silicone filler (FILLER below) in the pores and
-around the specimen, at each --viscosities value. Writes lattice_filled_stress_strain.csv,
+the buffer gas beside the specimen (--filler pores; --filler surround: the liquid beside it too,
+below the plate, whose squeeze film between plate and floor sets the filled stress by the room's
+width), at each --viscosities value. Writes lattice_filled_stress_strain.csv,
 lattice_filled_summary.csv and lattice_filled_stress_strain.png.
 
     scripts/python benchmarks/lattice/lattice_compression.py --study filled --build build --out output/lattice_filled
@@ -80,6 +82,10 @@ FILLER_RHO, FILLER_C, FILLER_GAMMA, FILLER_CV = 970.0, 1000.0, 4.4, 1500.0
 # plate starts at full speed, the rarefactions it launches put the liquid beside its corner in
 # tension and the solids' EOS has no state there (the liquid has no cavitation model).
 P_AMBIENT = 5.0e7
+# With --filler pores the mesh beside the specimen below the plate holds the buffer gas at this
+# density (c = sqrt(1.4 P_AMBIENT / rho) = 837 m/s): the liquid squeezed out of the windows meets a
+# gas that leaves through the open side face, not a liquid film the plate squeezes over the room.
+BESIDE_RHO = 100.0
 
 
 def scene_outputs(config):
@@ -202,10 +208,13 @@ class SceneDumper(yaml.SafeDumper):
         return True
 
 
-def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, room=3.0e-3):
+def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, room=3.0e-3, filler="surround",
+               beside_rho=None):
     """The shipped scene as the open-cell variant: a window in the outer half wall, mesh h, plate at
     rate x a, to 70 % strain, `room` [m] of mesh beside the specimen, MPM's shape function `shape`
-    (None: the shipped scene's); filled with the silicone at `viscosity` [Pa s] unless None."""
+    (None: the shipped scene's); filled with the silicone at `viscosity` [Pa s] unless None, in the
+    pores and beside the specimen below the plate (filler "surround") or in the pores only, the
+    buffer gas beside the specimen (filler "pores", at density beside_rho, BESIDE_RHO if None)."""
     s = yaml.safe_load(open(os.path.join(ROOT, config)))
     if shape is not None:
         s["mpm"]["shape_function"] = shape
@@ -244,9 +253,13 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     bottom = plate["shape"]["lo"][1]
     s["materials"].insert(1, {"name": "buffer", "kind": "fluid", "eos": {"type": "ideal_gas", "gamma": 1.4},
                               "specific_heat": P_AMBIENT / (0.4 * FILLER_RHO * 300.0)})
+    edge = hi[0] if filler == "surround" else a   # the liquid's extent in x below the plate
+    beside = [] if filler == "surround" else [
+        {"name": "beside", "shape": {"type": "box", "lo": [a, lo[1]], "hi": [hi[0], bottom]}, "material": "buffer",
+         "density": BESIDE_RHO if beside_rho is None else beside_rho, "pressure": P_AMBIENT}]
     s["geometry"][0:0] = [
-        {"name": "filler", "shape": {"type": "box", "lo": lo, "hi": [hi[0], bottom]}, "material": "silicone",
-         "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300},
+        {"name": "filler", "shape": {"type": "box", "lo": lo, "hi": [edge, bottom]}, "material": "silicone",
+         "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300}] + beside + [
         {"name": "buffer", "shape": {"type": "box", "lo": [lo[0], bottom], "hi": hi}, "material": "buffer",
          "velocity": list(plate["velocity"]), "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300}]
     s["boundary"]["x+"] = {"type": "outflow", "pressure": P_AMBIENT}   # the specimen's open side
@@ -315,7 +328,8 @@ def filled_study(args):
     cases, commands = [], []
     for config, a, rho in SCENES:
         for mu in [None] + viscosities:
-            s = open_scene(config, a, args.mesh, args.rate, mu, args.filled_cfl, args.shape, args.room)
+            s = open_scene(config, a, args.mesh, args.rate, mu, args.filled_cfl, args.shape, args.room, args.filler,
+                           args.beside_density)
             path = os.path.join(out, s["scene"] + ".yaml")
             yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
             exe = os.path.join(build, "mpm_solver", "mpm_solver") if mu is None else os.path.join(build, "coupler", "mpmice")
@@ -346,10 +360,11 @@ def filled_study(args):
                         "plate_force_plateau_MPa": plate_plateau / 1e6, "end_strain": float(strain[-1]),
                         "particles": particles, "steps": steps, "wall_s": wall})
     empty = {r["a_mm"]: r for r in summary if not r["filled"]}
-    for r in summary:
-        e = empty[r["a_mm"]]
-        r["plateau_over_empty"] = r["plateau_MPa"] / e["plateau_MPa"]
-        r["absorbed_50_over_empty"] = r["absorbed_to_50pct_MJ_per_m3"] / e["absorbed_to_50pct_MJ_per_m3"]
+    for r in summary:  # NaN where the empty run of the same cell is not in the output (--only)
+        e = empty.get(r["a_mm"])
+        r["plateau_over_empty"] = r["plateau_MPa"] / e["plateau_MPa"] if e else float("nan")
+        r["absorbed_50_over_empty"] = (r["absorbed_to_50pct_MJ_per_m3"] / e["absorbed_to_50pct_MJ_per_m3"]
+                                       if e else float("nan"))
     with open(os.path.join(out, "lattice_filled_stress_strain.csv"), "w") as f:
         f.write("scene,a_mm,viscosity_Pa_s,strain,stress_MPa,plate_stress_MPa\n")
         for name, a, mu, e, st, sp in rows:
@@ -563,7 +578,12 @@ def main():
     # volumetric mode of its particles until a polymer particle there falls below 0 K (33 % strain at
     # a = 4.0 mm, 1 Pa s); quadratic B-splines keep it quiet (docs/slides.md, "Filled lattices").
     ap.add_argument("--shape", default="bspline2", help="filled study: MPM shape function of every run, empty and filled")
-    ap.add_argument("--room", type=float, default=5.0e-3, help="filled study: mesh beside the specimen [m]")
+    ap.add_argument("--room", type=float, default=9.0e-3, help="filled study: mesh beside the specimen [m]")
+    ap.add_argument("--beside-density", type=float, default=BESIDE_RHO,
+                    help="filled study, --filler pores: the buffer gas's density beside the specimen [kg/m^3]")
+    ap.add_argument("--filler", choices=["surround", "pores"], default="pores",
+                    help="filled study: the liquid in the pores and beside the specimen below the plate "
+                         "(surround), or in the pores only with the buffer gas beside it (pores)")
     ap.add_argument("--only", default="", help="filled study: run only these scenes (comma-separated names); "
                     "the others' outputs are read where present")
     ap.add_argument("--mesh3d", type=float, default=2.5e-4, help="3d study: mesh spacing [m]")
