@@ -209,12 +209,14 @@ class SceneDumper(yaml.SafeDumper):
 
 
 def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, room=3.0e-3, filler="surround",
-               beside_rho=None):
+               beside_rho=BESIDE_RHO):
     """The shipped scene as the open-cell variant: a window in the outer half wall, mesh h, plate at
     rate x a, to 70 % strain, `room` [m] of mesh beside the specimen, MPM's shape function `shape`
     (None: the shipped scene's); filled with the silicone at `viscosity` [Pa s] unless None, in the
     pores and beside the specimen below the plate (filler "surround") or in the pores only, the
-    buffer gas beside the specimen (filler "pores", at density beside_rho, BESIDE_RHO if None)."""
+    buffer gas beside the specimen (filler "pores", at density beside_rho)."""
+    if filler not in ("surround", "pores"):
+        raise ValueError(f"open_scene: filler '{filler}' (expected 'surround' or 'pores')")
     s = yaml.safe_load(open(os.path.join(ROOT, config)))
     if shape is not None:
         s["mpm"]["shape_function"] = shape
@@ -256,7 +258,7 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     edge = hi[0] if filler == "surround" else a   # the liquid's extent in x below the plate
     beside = [] if filler == "surround" else [
         {"name": "beside", "shape": {"type": "box", "lo": [a, lo[1]], "hi": [hi[0], bottom]}, "material": "buffer",
-         "density": BESIDE_RHO if beside_rho is None else beside_rho, "pressure": P_AMBIENT}]
+         "density": beside_rho, "pressure": P_AMBIENT}]
     s["geometry"][0:0] = [
         {"name": "filler", "shape": {"type": "box", "lo": lo, "hi": [edge, bottom]}, "material": "silicone",
          "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300}] + beside + [
