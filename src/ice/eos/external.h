@@ -23,6 +23,11 @@ class ExternalSolidEos final : public Eos {
       drhodp[i] = rho[i] > 0 ? 1.0 / law_.dpdrho(rho[i]) : 0.0;
     }
   }
+  /// No state at p <= 0 (the tension branch's density tends to 0 there): the floor is 0.
+  void pressureFloor(std::size_t n, const double* e, double* pmin) const override {
+    (void)e;
+    for (std::size_t i = 0; i < n; ++i) pmin[i] = 0.0;
+  }
   void soundSpeed2(std::size_t n, const double* rho, const double* e, double* c2) const override {
     (void)e;
     for (std::size_t i = 0; i < n; ++i) c2[i] = law_.dpdrho(rho[i]);

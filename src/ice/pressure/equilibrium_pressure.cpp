@@ -202,7 +202,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     }
   }
   // Cavitating liquids (not traces that may be held): their cut-off is their floor. Where one sets
-  // the cell's floor F (strictly above the others'), f(F) with the liquids at the cut-off decides:
+  // the cell's floor F (at or above the others'), f(F) with the liquids at the cut-off decides:
   // f(F) >= 0 is a cavity at F (solved here), f(F) < 0 puts the root above F (iterated below).
   cavFloor_.assign(na, 0);
   bool anyCav = false;
@@ -216,7 +216,10 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       int cm = -1;
       for (std::size_t r = 0; r < nm; ++r) {
         const double* ph = hold ? pHold_[r].data() : none;
-        if (!(rho[r][c] > 0) || (ph && ph[c - c0_] > -inf) || !(pCav_[r] > F)) continue;
+        // A cut-off equal to another material's floor (a solid_bulk solid's 0) is the cell's too.
+        if (!(rho[r][c] > 0) || (ph && ph[c - c0_] > -inf) || !(pCav_[r] > -inf) || !(pCav_[r] >= F) ||
+            (cm >= 0 && pCav_[r] == F))
+          continue;
         F = pCav_[r];
         cm = static_cast<int>(r);
       }
@@ -291,6 +294,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   }
   lo_.assign(floor_.begin(), floor_.begin() + static_cast<std::ptrdiff_t>(na));
   hi_.assign(na, inf);
+  down_.assign(na, 0);
   // Per active slot the bracket is kept in lo_/hi_ (and the floor in floor_), indexed by slot
   // (compacted along with active_). Every iterate lies strictly inside (lo, hi).
   for (int it = 0; na > 0; ++it) {
@@ -372,17 +376,35 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       if (f < 0) lo = pc; else hi = pc;
       double next = (!bad_[a] && df_[a] > 0) ? next_[a] : std::numeric_limits<double>::quiet_NaN();  // pc - f / df
       const double F = floor_[a];
-      if (!(next > lo && next < hi)) {
+      unsigned char down = 0;  // a Newton step taken ends a run of steps towards the floor
+      // A bracket seen from both sides that spans more than three decades above the floor is
+      // bisected geometrically whatever Newton says: Newton in p from below a root where the
+      // volumes depend on ln p (a solid_bulk trace) gains only a factor 1 + ln(root / p) a step.
+      const bool wide = std::isfinite(F) && std::isfinite(hi) && lo > F && hi - F > 1e3 * (lo - F);
+      if (wide || !(next > lo && next < hi)) {
+        down = down_[a];
         if (std::isfinite(lo) && std::isfinite(hi)) {  // bisect; geometrically across decades above the floor
           const double base = std::isfinite(F) ? F : 0.0, a0 = lo - base, b0 = hi - base;
-          next = a0 > 0 && b0 > 1e3 * a0 ? base + std::sqrt(a0 * b0) : 0.5 * (lo + hi);
+          if (std::isfinite(F) && lo == F && b0 > 0) {
+            // Nothing below the root seen yet: step towards the floor by 2^-1, 2^-2, 2^-4, ... of the
+            // distance (k-th consecutive step: 2^-(2^k)), so a root decades above the floor (a
+            // solid_bulk trace's tension branch: p ~ 1e-190 Pa) is bracketed in about ten steps,
+            // and the first step is the plain bisection.
+            next = base + std::ldexp(b0, -(1 << std::min<int>(down, 10)));
+            down = static_cast<unsigned char>(std::min<int>(down + 1, 11));
+          } else {
+            next = a0 > 0 && b0 > 1e3 * a0 ? base + std::sqrt(a0) * std::sqrt(b0) : 0.5 * (lo + hi);
+          }
         } else if (std::isfinite(lo)) {
           next = lo + 2.0 * std::max(std::abs(lo), 1.0);
         } else {
           next = hi - 2.0 * std::abs(hi) - 1.0;
         }
       }
-      const bool collapsed = std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 4e-16 * std::max(std::abs(hi), std::abs(lo));
+      // The bracket resolved to round-off, or no double strictly inside it (a root in the last
+      // representable step above the floor).
+      const bool collapsed = std::isfinite(lo) && std::isfinite(hi) &&
+                             (hi - lo <= 4e-16 * std::max(std::abs(hi), std::abs(lo)) || !(next > lo && next < hi));
       // No iterate below the root seen yet (a cavitating floor F has f(F) < 0: the root is above it).
       const bool atFloor = std::isfinite(F) && lo == F && !cavFloor_[a];
       if (collapsed && atFloor) {  // f > 0 down to the floor: no admissible root
@@ -401,6 +423,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       active_[keep] = c;
       lo_[keep] = lo;
       hi_[keep] = hi;
+      down_[keep] = down;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
       cavFloor_[keep] = cavFloor_[a];
@@ -410,6 +433,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     active_.resize(na);
     lo_.resize(na);
     hi_.resize(na);
+    down_.resize(na);
     floor_.resize(na);
     floorMat_.resize(na);
     cavFloor_.resize(na);

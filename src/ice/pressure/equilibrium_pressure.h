@@ -4,12 +4,14 @@
 /// rho_r is material r's density per cell volume (mass / V) and e_r its specific internal energy,
 /// held fixed. f(p) = 1 - sum_r rho_r / rho_r^micro(p) increases with p. The search never leaves
 /// the admissible interval: its lower end is the largest of the present materials' pressure
-/// floors at their e (Eos::pressureFloor: 0 for an ideal gas, -p_inf for a stiffened gas, none
+/// floors at their e (Eos::pressureFloor: 0 for an ideal gas and a solid_bulk solid, -p_inf for a stiffened gas, none
 /// for Mie-Gruneisen); below a root lie pressures where f < 0 or some material has no density
 /// (rho^micro <= 0), above it f > 0. All cells iterate in lockstep (one batch EOS call per
 /// material per sweep, over the still-active cells): Newton steps, replaced by bisection
-/// (geometric across decades, measured from the floor) or bracket expansion whenever they leave
-/// the bracket, so every iterate is admissible. The iteration count per cell is returned as a
+/// (geometric across decades, measured from the floor; from the floor itself, while no iterate
+/// below the root has been seen, by steps of 2^-1, 2^-2, 2^-4, ... of the distance to it, so a
+/// root hundreds of decades above the floor is bracketed in about ten) or bracket expansion
+/// whenever they leave the bracket, so every iterate is admissible. The iteration count per cell is returned as a
 /// diagnostic. A cell without a root is a failure saying why: a material with no admissible
 /// state at its energy (e.g. e <= 0), or f > 0 all the way down to the floor (the materials
 /// cannot fill the cell at any admissible pressure), or no convergence in the iteration limit.
@@ -131,6 +133,7 @@ class EquilibriumPressure {
   std::vector<double> pa_, ea_, ra_, da_, f_, df_, lo_, hi_, floor_, pf_, next_;
   std::vector<double> fluidMass_;  // the trace rule: each active cell's fluid mass (per unit volume)
   std::vector<int> floorMat_;
+  std::vector<unsigned char> down_;  // consecutive steps towards the floor with nothing below the root seen
   std::vector<char> bad_, cavFloor_;  // cavFloor_: F is a cavitating liquid's cut-off and f(F) < 0
 };
 

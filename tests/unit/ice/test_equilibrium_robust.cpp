@@ -244,3 +244,69 @@ output: {enabled: false}
   }
   EXPECT_LT(minP, -1e5);  // the water went under tension (the case this covers)
 }
+
+// A solid_bulk trace beside a liquid that is short of its volume at p = 0 (silicone drained from a
+// lattice's pore, 1 Pa s filled run at 1000 1/s): the solid's tension branch rho0 (p / p_ref)^(p_ref / K)
+// (p_ref / K = 3.6e-5 for the polymer) fills the deficit only at p ~ 1e-150 .. 1e-250 Pa. The root
+// lies hundreds of decades above the solid's floor (0); bisection linear in p reached 1e-30 after
+// 100 iterations and the run stopped. Now it is bracketed by steps of 2^-1, 2^-2, 2^-4, ... towards
+// the floor: found within 60 iterations to the residual, p > 0, never at or below a floor.
+TEST(IceEquilibriumRobust, SolidTraceFillsALiquidsDeficitDecadesAboveTheFloor) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  const double es = 1500 * 293.0, el = 1500 * 293.0;
+  ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
+  for (const double pStar : {1e-20, 1e-150, 1e-250}) {
+    for (const double thetaS : {1e-6, 1e-3, 0.3}) {
+      const std::vector<double> guesses = {5e7, 1e5, 1e12, -1e10, std::numeric_limits<double>::quiet_NaN()};
+      const std::size_t nc = guesses.size();
+      std::vector<double> rs(nc, thetaS * solid->density(pStar, es)), rl(nc, (1 - thetaS) * liquid->density(pStar, el));
+      std::vector<double> ens(nc, es), enl(nc, el), ms(nc), ml(nc), p = guesses;
+      std::vector<int> it(nc);
+      std::vector<std::int64_t> cells;
+      for (std::size_t c = 0; c < nc; ++c) cells.push_back(static_cast<std::int64_t>(c));
+      solid->minMargin = liquid->minMargin = std::numeric_limits<double>::infinity();
+      const auto fails = eq.solve(cells, {rs.data(), rl.data()}, {ens.data(), enl.data()}, p.data(),
+                                  {ms.data(), ml.data()}, it.data());
+      ASSERT_TRUE(fails.empty()) << "p* " << pStar << " theta_s " << thetaS << ": " << fails.size()
+                                 << " failures, first at p = " << fails[0].p << " after " << fails[0].iterations;
+      for (std::size_t c = 0; c < nc; ++c) {
+        EXPECT_GT(p[c], 0.0);
+        EXPECT_NEAR(rs[c] / ms[c] + rl[c] / ml[c], 1.0, 1e-11) << "p* " << pStar << " guess " << guesses[c];
+        // The volume depends on ln p with slope theta_s p_ref / K: the root to 1e-11 of that.
+        if (thetaS >= 1e-3) {
+          EXPECT_NEAR(std::log(p[c] / pStar), 0.0, 1e-11 / (thetaS * 3.6e-5)) << "p* " << pStar;
+        }
+        EXPECT_LE(it[c], 60) << "p* " << pStar << " theta_s " << thetaS << " guess " << guesses[c];
+      }
+      EXPECT_GT(solid->minMargin, 0.0);
+      EXPECT_GT(liquid->minMargin, 0.0);
+    }
+  }
+}
+
+// The same liquid further short of its volume than the solid trace can fill at any positive double
+// pressure (the root would lie near 1e-400 Pa): a failure saying there is no root above the floor,
+// which the solid sets, within the iteration limit, not a spin to the limit or a clamp.
+TEST(IceEquilibriumRobust, SolidTraceThatCannotFillTheDeficitIsNoRootAboveItsFloor) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  const double es = 1500 * 293.0, el = 1500 * 293.0, thetaS = 1e-3;
+  // v_s(1e-400) = v_s(1e-300) (1e-100)^(-p_ref / K): from the law's closed form, out of double range.
+  const double vs = 1.0 / solid->density(1e-300, es) * std::pow(10.0, 100 * 1e5 / 2.78e9);
+  const double ms0 = thetaS / vs;
+  std::vector<double> rs = {ms0}, rl = {(1 - thetaS) * liquid->density(0.0, el)}, ens = {es}, enl = {el}, m1(1), m2(1);
+  std::vector<double> p = {5e7};
+  std::vector<int> it(1);
+  ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
+  const auto fails = eq.solve({0}, {rs.data(), rl.data()}, {ens.data(), enl.data()}, p.data(), {m1.data(), m2.data()},
+                              it.data());
+  ASSERT_EQ(fails.size(), 1u);
+  EXPECT_EQ(fails[0].kind, ice::EquilibriumFailure::Kind::NoRootAboveFloor);
+  EXPECT_EQ(fails[0].material, 0);
+  EXPECT_EQ(fails[0].floor, 0.0);
+  EXPECT_LT(fails[0].iterations, 60);
+  EXPECT_GT(solid->minMargin, 0.0);
+}
