@@ -235,13 +235,16 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
         }
         double rr, dd;
         const double* ph = hold ? pHold_[r].data() : none;
-        if (ph && F < ph[c - c0_]) rr = rhoHold_[r][static_cast<std::size_t>(c - c0_)];
-        else eos_[r]->density(1, &F, &e[r][c], &rr, &dd);
-        if (!(rr > 0) && pCav_[r] != F) {
-          // F is the end of this material's range too (a solid_bulk solid has no state at p <= 0,
-          // and its density tends to ~rho0 (p / p_ref)^(p_ref / K) as p -> 0+): its limit from above.
-          const double Fp = F + 1e-9 * std::max(std::abs(F), 1.0);
-          eos_[r]->density(1, &Fp, &e[r][c], &rr, &dd);
+        if (ph && F < ph[c - c0_]) {
+          rr = rhoHold_[r][static_cast<std::size_t>(c - c0_)];
+        } else {
+          // Where F is the end of this material's range too (a solid_bulk solid has no state at
+          // p <= 0, its density tends to ~rho0 (p / p_ref)^(p_ref / K) as p -> 0+; an ideal gas at
+          // 0): its limit from above, never its law at its floor.
+          double pf;
+          eos_[r]->pressureFloor(1, &e[r][c], &pf);
+          const double pe = pCav_[r] != F && !(F > pf) ? F + 1e-9 * std::max(std::abs(F), 1.0) : F;
+          eos_[r]->density(1, &pe, &e[r][c], &rr, &dd);
         }
         rhoMicro[r][c] = rr;
         if (!(rr > 0) || !std::isfinite(rr)) ok = false;
@@ -295,6 +298,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   lo_.assign(floor_.begin(), floor_.begin() + static_cast<std::ptrdiff_t>(na));
   hi_.assign(na, inf);
   down_.assign(na, 0);
+  up_.assign(na, 0);
   // Per active slot the bracket is kept in lo_/hi_ (and the floor in floor_), indexed by slot
   // (compacted along with active_). Every iterate lies strictly inside (lo, hi).
   for (int it = 0; na > 0; ++it) {
@@ -381,6 +385,21 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       // bisected geometrically whatever Newton says: Newton in p from below a root where the
       // volumes depend on ln p (a solid_bulk trace) gains only a factor 1 + ln(root / p) a step.
       const bool wide = std::isfinite(F) && std::isfinite(hi) && lo > F && hi - F > 1e3 * (lo - F);
+      // Below the root with nothing above it seen, Newton far from the root may gain only a factor
+      // of the distance above the floor a step (2 for a gas trace filling the cell: f ~ 1 - B / p,
+      // from a warm start at 1e-150 Pa left by a solid trace's root). After seven such steps (each
+      // at least 1.5 x the distance: the root is more than 2^7 away; fewer leave Newton's path as
+      // it was) the distance grows by 2^2, 2^4, 2^8, ... instead; the bracket found above is then
+      // wide and bisected geometrically.
+      unsigned char up = 0;
+      if (!std::isfinite(hi) && std::isfinite(F) && f < 0 && pc > F) {
+        const bool slow = !(next > lo) || next - F >= 1.5 * (pc - F);
+        up = slow ? static_cast<unsigned char>(std::min<int>(up_[a] + 1, 17)) : 0;
+        if (up >= 8) {
+          const double grow = F + std::ldexp(pc - F, 1 << std::min<int>(up - 7, 9));
+          if (std::isfinite(grow) && !(next > grow)) next = grow;
+        }
+      }
       if (wide || !(next > lo && next < hi)) {
         down = down_[a];
         if (std::isfinite(lo) && std::isfinite(hi)) {  // bisect; geometrically across decades above the floor
@@ -424,6 +443,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
       lo_[keep] = lo;
       hi_[keep] = hi;
       down_[keep] = down;
+      up_[keep] = up;
       floor_[keep] = F;
       floorMat_[keep] = floorMat_[a];
       cavFloor_[keep] = cavFloor_[a];
@@ -434,6 +454,7 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     lo_.resize(na);
     hi_.resize(na);
     down_.resize(na);
+    up_.resize(na);
     floor_.resize(na);
     floorMat_.resize(na);
     cavFloor_.resize(na);

@@ -134,6 +134,7 @@ class EquilibriumPressure {
   std::vector<double> fluidMass_;  // the trace rule: each active cell's fluid mass (per unit volume)
   std::vector<int> floorMat_;
   std::vector<unsigned char> down_;  // consecutive steps towards the floor with nothing below the root seen
+  std::vector<unsigned char> up_;    // consecutive slow steps up with nothing above the root seen
   std::vector<char> bad_, cavFloor_;  // cavFloor_: F is a cavitating liquid's cut-off and f(F) < 0
 };
 

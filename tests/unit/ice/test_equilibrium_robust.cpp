@@ -310,3 +310,81 @@ TEST(IceEquilibriumRobust, SolidTraceThatCannotFillTheDeficitIsNoRootAboveItsFlo
   EXPECT_LT(fails[0].iterations, 60);
   EXPECT_GT(solid->minMargin, 0.0);
 }
+
+// A liquid with the cavitation cut-off p_c = 0 beside a solid_bulk solid, whose floor is 0 too:
+// the cut-off ties the solid's floor and is the cell's. Short of its volume at p = 0, the liquid
+// cavitates there (p = 0, listed in cavitated(), the solid at its limit from above, the liquid
+// taking the rest of the cell) instead of the solid's tension branch filling the deficit near
+// 1e-150 Pa; with enough liquid the root lies above 0 and is found as usual.
+TEST(IceEquilibriumRobust, ACutOffAtTheSolidsFloorCavitatesThere) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  liquid->setCavitationPressure(0.0);
+  const double es = 1500 * 293.0, el = 1500 * 293.0, thetaS = 0.3;
+  const double rhoS = thetaS * solid->density(1e-9, es);
+  // Cell 0: the liquid 1 % short of its volume at p = 0 (a cavity); cell 1: at 2e5 Pa (a root).
+  std::vector<double> rs = {rhoS, thetaS * solid->density(2e5, es)},
+                      rl = {0.99 * (1 - thetaS) * liquid->density(0.0, el), (1 - thetaS) * liquid->density(2e5, el)};
+  std::vector<double> ens = {es, es}, enl = {el, el}, ms(2), ml(2), p = {5e7, 5e7};
+  std::vector<int> it(2);
+  ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
+  const auto fails = eq.solve({0, 1}, {rs.data(), rl.data()}, {ens.data(), enl.data()}, p.data(),
+                              {ms.data(), ml.data()}, it.data());
+  ASSERT_TRUE(fails.empty());
+  EXPECT_EQ(p[0], 0.0);
+  ASSERT_EQ(eq.cavitated().size(), 1u);
+  EXPECT_EQ(eq.cavitated()[0], (std::pair<int, std::int64_t>{1, 0}));
+  EXPECT_NEAR(rs[0] / ms[0] + rl[0] / ml[0], 1.0, 1e-12);                 // the liquid takes the rest
+  EXPECT_LT(ml[0], liquid->density(0.0, el));                                // below rho_c: the cavity
+  EXPECT_NEAR(ms[0], solid->density(1e-9, es), 1e-6 * ms[0]);               // the solid at its limit
+  EXPECT_NEAR(p[1], 2e5, 1e-6 * 2e5);
+  EXPECT_GT(solid->minMargin, 0.0);
+}
+
+// Warm starts far below the root with nothing above it seen: a gas trace filling 0.8 of a cell whose
+// last pressure was a solid trace's 1e-150 Pa (lattice, a = 4.0 mm, 1 Pa s at 1000 1/s: the pores'
+// liquid drained, the buffer gas arriving), and the solid trace's own log-like root approached from
+// 1e-250 Pa. Newton from below gains a factor 2 (the gas, f ~ 1 - B / p) or 1 + ln(root / p) (the
+// solid) a step: 100 iterations reached 7.5e-10 Pa of a root near 1e-2 and the run stopped. The
+// distance above the floor now grows by 2^2, 2^4, 2^8, ... after two slow steps.
+TEST(IceEquilibriumRobust, WarmStartsHundredsOfDecadesBelowTheRoot) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  auto gas = air();
+  const double es = 1500 * 293.0, el = 1500 * 293.0, eg = 717.5 * 293.0;
+  const std::vector<double> guesses = {1e-150, 1e-250, 1e-300, 1e-20};
+  const std::size_t nc = guesses.size();
+  std::vector<std::int64_t> cells;
+  for (std::size_t c = 0; c < nc; ++c) cells.push_back(static_cast<std::int64_t>(c));
+  for (const double pStar : {1e-2, 1e3, 1e-20}) {
+    // liquid 0.2, solid trace 1e-3, gas the rest (0.799) at pStar.
+    std::vector<double> rs(nc, 1e-3 * solid->density(pStar, es)), rl(nc, 0.2 * liquid->density(pStar, el)),
+        rg(nc, 0.799 * gas->density(pStar, eg));
+    std::vector<double> ens(nc, es), enl(nc, el), eng(nc, eg), ms(nc), ml(nc), mg(nc), p = guesses;
+    std::vector<int> it(nc);
+    ice::EquilibriumPressure eq({solid.get(), liquid.get(), gas.get()}, 1e-11, 100);
+    const auto fails = eq.solve(cells, {rs.data(), rl.data(), rg.data()}, {ens.data(), enl.data(), eng.data()},
+                                p.data(), {ms.data(), ml.data(), mg.data()}, it.data());
+    ASSERT_TRUE(fails.empty()) << "p* " << pStar << ": first failure at p = " << fails[0].p << " after "
+                               << fails[0].iterations << " iterations";
+    for (std::size_t c = 0; c < nc; ++c) {
+      EXPECT_NEAR(p[c] / pStar, 1.0, 1e-9) << "p* " << pStar << " guess " << guesses[c];
+      EXPECT_LE(it[c], 60) << "p* " << pStar << " guess " << guesses[c];
+    }
+    // Without the gas: the solid trace's root at 1e-150 .. 1e-20 from below.
+    std::vector<double> none(nc, 0.0);
+    for (double& r : rl) r = (1 - 1e-3) / 0.2 * r;  // the liquid fills the rest at pStar
+    for (double& x : p) x = 1e-300;
+    const auto f2 = eq.solve(cells, {rs.data(), rl.data(), none.data()}, {ens.data(), enl.data(), eng.data()},
+                             p.data(), {ms.data(), ml.data(), mg.data()}, it.data());
+    ASSERT_TRUE(f2.empty()) << "p* " << pStar;
+    for (std::size_t c = 0; c < nc; ++c) {
+      EXPECT_NEAR(rs[c] / ms[c] + rl[c] / ml[c], 1.0, 1e-11) << "p* " << pStar;
+      EXPECT_LE(it[c], 60) << "p* " << pStar << " (solid trace from 1e-300)";
+    }
+  }
+  EXPECT_GT(solid->minMargin, 0.0);
+  EXPECT_GT(gas->minMargin, 0.0);
+}
