@@ -74,9 +74,14 @@ RATE_C, RATE_P = 1.0e5, 2.0
 PORE_D = 3.0e-3           # the slides' pore diameter
 # The filler: a silicone oil (polydimethylsiloxane), rho 970 kg/m^3 and c 1000 m/s (Dow Corning 200
 # fluid data: 0.97 g/cm^3, sound speed about 990 m/s at 25 C, nearly independent of viscosity
-# from 1e3 cSt up), cv 1500 J/(kg K); a stiffened gas with gamma 4.4 (only rho and c matter at
-# these speeds, Mach < 0.03) and p_inf such that c = 1000 m/s at the ambient pressure P_AMBIENT.
-FILLER_RHO, FILLER_C, FILLER_GAMMA, FILLER_CV = 970.0, 1000.0, 4.4, 1500.0
+# from 1e3 cSt up), cv 1500 J/(kg K); a stiffened gas with p_inf such that c = 1000 m/s at the ambient
+# pressure P_AMBIENT and gamma 1.62: the stiffened gas's Grueneisen parameter is gamma - 1 (dp/de at
+# fixed rho = (gamma - 1) rho), and the oil's is beta c^2 / c_p = 9.6e-4 1/K x (990 m/s)^2 / 1500 J/(kg K)
+# = 0.62 (volume expansion beta of PDMS fluids 9.2-9.6e-4 1/K). Until 5 Dec 2026 gamma was water's 4.4
+# (Grueneisen 3.4): the heat the liquid takes in the pores (the drag's, the Lagrangian correction's)
+# raised its pressure 5.5 times as much as the oil's would, and a drained pore's liquid, heated, fell
+# below 0 K as its cold energy p_inf v grew (docs/slides.md "The filler's Grueneisen parameter").
+FILLER_RHO, FILLER_C, FILLER_GAMMA, FILLER_CV = 970.0, 1000.0, 1.62, 1500.0
 # The liquid, the solids' stress-free state and the open faces sit at 50 MPa: a gauge offset (only
 # pressure differences act on the specimen). At 1 atm and at 10 MPa the runs stop within 5 us: the
 # plate starts at full speed, the rarefactions it launches put the liquid beside its corner in
