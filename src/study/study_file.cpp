@@ -5,6 +5,7 @@
 #include <set>
 
 #include "study/factors.h"
+#include "core/io/time_series.h"
 #include "study/key_path.h"
 #include "study/reference/references.h"
 
@@ -127,10 +128,12 @@ Study readStudy(const std::string& path) {
     fail(path, "", std::string("not valid YAML: ") + e.what());
   }
   const std::string keys =
-      "study, scene, program, reference, time_limit, repeats, cost, set, axes, points, base, factors, slices";
+      "study, scene, program, reference, reference_curve, reference_column, time_limit, repeats, cost, set, axes, "
+      "points, base, factors, slices";
   if (!root.IsMap()) fail(path, "", "expected a mapping (" + keys + ")");
-  const std::set<std::string> known{"study", "scene",  "program", "reference", "time_limit", "repeats", "cost",
-                                    "set",   "axes",   "points",  "base",      "factors",    "slices"};
+  const std::set<std::string> known{"study",      "scene",   "program", "reference", "reference_curve",
+                                    "reference_column", "time_limit", "repeats", "cost", "set",
+                                    "axes",       "points",  "base",    "factors",   "slices"};
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
     if (!known.count(k)) fail(path, k, "unknown key (valid: " + keys + ")");
@@ -147,10 +150,31 @@ Study readStudy(const std::string& path) {
   else fail(path, "program", "'" + program + "' is not a program (valid: mpmice, coupler_run)");
   if (!root["reference"]) fail(path, "reference", "required (valid: " + referenceNames() + ")");
   s.reference = scalar(path, root["reference"], "reference");
+  const Reference* ref = nullptr;
   try {
-    (void)findReference(s.reference);
+    ref = &findReference(s.reference);
   } catch (const std::invalid_argument& e) {
     fail(path, "reference", e.what());
+  }
+  if (ref->readsCurve) {
+    if (!root["reference_curve"])
+      fail(path, "reference_curve",
+           "required with the reference " + s.reference + ": a CSV with `time` and the probe column (relative to the study file)");
+    if (!root["reference_column"])
+      fail(path, "reference_column", "required with the reference " + s.reference + ": the probe column compared (e.g. tip_ux)");
+    const fs::path curve = scalar(path, root["reference_curve"], "reference_curve");
+    s.referenceCurve = (curve.is_absolute() ? curve : fs::path(path).parent_path() / curve).lexically_normal().string();
+    s.referenceColumn = scalar(path, root["reference_column"], "reference_column");
+    core::TimeSeries c;
+    try {
+      c = core::readTimeSeriesFile(s.referenceCurve, s.referenceColumn);
+    } catch (const std::invalid_argument& e) {
+      fail(path, "reference_curve", e.what());
+    }
+    if (c.t.size() < 2) fail(path, "reference_curve", s.referenceCurve + ": expected at least 2 rows of data");
+  } else {
+    for (const char* k : {"reference_curve", "reference_column"})
+      if (root[k]) fail(path, k, "only a reference that reads a curve takes it (probe_curve); this study's is " + s.reference);
   }
   if (root["time_limit"]) {
     try {

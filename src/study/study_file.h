@@ -31,6 +31,8 @@ struct Study {
   std::string scene;       // the base scene, resolved against the study file's folder
   Program program = Program::Mpmice;
   std::string reference;   // a name of the reference registry (study/reference/references.h)
+  std::string referenceCurve;   // `reference_curve`, resolved against the study file's folder (probe_curve)
+  std::string referenceColumn;  // `reference_column`: the probe column compared (probe_curve)
   double timeLimit = 3600; // [s] per run
   int repeats = 1;         // runs per point: the wall time is their median (the machine is noisy)
   Cost cost = Cost::Wall;  // `cost: wall | cpu`, the Pareto plot's time axis

@@ -153,7 +153,8 @@ int runStudy(const Study& s, const StudyOptions& o, std::ostream& out, std::ostr
       writeText(pr.dir / "command.txt", coupler::shellLine(argv) + "\n");
       out << "study " << s.name << ": point " << i + 1 << "/" << s.points.size() << " (" << label << "): "
           << coupler::shellLine(argv) << std::endl;
-      r = runPoint(argv, pr.dir.string(), s.timeLimit, s.repeats, ref, RunFiles{pr.dir.string(), sceneFile.string(), pr.sceneName});
+      const RunFiles files{pr.dir.string(), sceneFile.string(), pr.sceneName, s.referenceCurve, s.referenceColumn};
+      r = runPoint(argv, pr.dir.string(), s.timeLimit, s.repeats, ref, files);
       if (r.stoppedBy != 0) {
         err << "study " << s.name << ": stopped by " << coupler::signalName(r.stoppedBy) << " during point " << i + 1
             << " (no result written; --resume runs it again)\n";

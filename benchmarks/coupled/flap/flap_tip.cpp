@@ -53,9 +53,7 @@ int main(int argc, char** argv) {
   out << "file,first_peak,first_peak_time,period,period_maxima,crossings,maxima,mean\n";
   try {
     for (const std::string& f : files) {
-      std::ifstream in(f);
-      if (!in) throw std::runtime_error(f + ": cannot open");
-      const auto m = mpmice::flap::measureTip(mpmice::flap::readProbeColumn(in, column, f), band, smooth);
+      const auto m = mpmice::flap::measureTip(mpmice::core::readTimeSeriesFile(f, column), band, smooth);
       char row[512];
       std::snprintf(row, sizeof row, "%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%.6g\n", f.c_str(), m.firstPeak, m.firstPeakTime,
                     m.period, m.periodMaxima, m.crossings, m.maxima, m.mean);

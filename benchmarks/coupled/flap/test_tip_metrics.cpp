@@ -1,7 +1,7 @@
 // The flap tip figures (tip_metrics.h) on synthetic signals with known answers: a sine about an
 // offset, a damped step response (first peak and damped period in closed form), the same with
-// high-frequency noise (no spurious crossings; smoothing removes the bias of the peak), and the
-// probes CSV reader.
+// high-frequency noise (no spurious crossings; smoothing removes the bias of the peak). The probes
+// CSV reader is core's (tests/unit/core/test_time_series.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,19 +80,4 @@ TEST(TipMetrics, TooShortGivesNaN) {
   const TipMetrics m = measureTip(sample(0.5, 1e-3, f));  // still rising
   EXPECT_TRUE(std::isnan(m.firstPeak));
   EXPECT_TRUE(std::isnan(m.period));
-}
-
-TEST(TipMetrics, ReadsTheProbeColumnsByName) {
-  std::istringstream in("step,time,tip_x,tip_y,tip_ux,tip_uy\n0,0,0.0125,0.9875,0,0\n1,0.5,0.1,0.98,0.0875,-0.0075\n");
-  const TipSeries s = readProbeColumn(in, "tip_ux");
-  ASSERT_EQ(s.t.size(), 2u);
-  EXPECT_EQ(s.t[1], 0.5);
-  EXPECT_EQ(s.u[1], 0.0875);
-  std::istringstream bad("step,time,tip_x\n");
-  try {
-    readProbeColumn(bad, "tip_ux", "p.csv");
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("no column 'tip_ux'"), std::string::npos) << e.what();
-  }
 }

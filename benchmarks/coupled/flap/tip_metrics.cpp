@@ -12,14 +12,6 @@ namespace mpmice::flap {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(cell);
-  return out;
-}
-
 std::vector<double> movingAverage(const std::vector<double>& t, const std::vector<double>& u, double window) {
   if (!(window > 0)) return u;
   std::vector<double> out(u.size());
@@ -44,35 +36,6 @@ double meanSpacing(const std::vector<double>& x) {
   return x.size() < 2 ? kNaN : (x.back() - x.front()) / double(x.size() - 1);
 }
 }  // namespace
-
-TipSeries readProbeColumn(std::istream& in, const std::string& column, const std::string& what) {
-  std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(what + ": empty, expected a CSV header line");
-  const std::vector<std::string> head = split(line);
-  auto find = [&](const std::string& name) {
-    const auto it = std::find(head.begin(), head.end(), name);
-    if (it == head.end()) throw std::runtime_error(what + ": no column '" + name + "' in the header '" + line + "'");
-    return static_cast<std::size_t>(it - head.begin());
-  };
-  const std::size_t ct = find("time"), cu = find(column);
-  TipSeries s;
-  int lineNo = 1;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (line.empty()) continue;
-    const std::vector<std::string> cells = split(line);
-    auto num = [&](std::size_t c) {
-      char* end = nullptr;
-      const double v = c < cells.size() ? std::strtod(cells[c].c_str(), &end) : 0.0;
-      if (c >= cells.size() || end == cells[c].c_str())
-        throw std::runtime_error(what + ":" + std::to_string(lineNo) + ": no number in column " + std::to_string(c + 1));
-      return v;
-    };
-    s.t.push_back(num(ct));
-    s.u.push_back(num(cu));
-  }
-  return s;
-}
 
 TipMetrics measureTip(const TipSeries& s, double band, double smooth) {
   TipMetrics m;

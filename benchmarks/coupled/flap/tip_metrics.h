@@ -10,15 +10,12 @@
 ///    for comparison the mean time between the maxima of successive upward excursions;
 ///  - mean: the time average of u over the whole record (trapezoidal).
 /// An optional centred moving average (window in seconds) smooths the signal first.
-#include <istream>
-#include <string>
-#include <vector>
+#include "core/io/time_series.h"
 
 namespace mpmice::flap {
 
-struct TipSeries {
-  std::vector<double> t, u;
-};
+/// The tip's record: a probe column against time (core::readTimeSeries reads it from a probes CSV).
+using TipSeries = core::TimeSeries;
 
 struct TipMetrics {
   double firstPeak = 0, firstPeakTime = 0;  // NaN when no upward excursion was found
@@ -27,10 +24,6 @@ struct TipMetrics {
   int crossings = 0, maxima = 0;
   double mean = 0;
 };
-
-/// Reads columns `time` and `column` of a CSV with a header line (the probes file). Throws
-/// std::runtime_error naming the missing column or the bad line.
-TipSeries readProbeColumn(std::istream& in, const std::string& column, const std::string& what = "input");
 
 /// The figures of u(t). `band` is the hysteresis half-width as a fraction of max(u) - min(u);
 /// `smooth` the moving-average window [s] (0: none).

@@ -4,6 +4,7 @@
 
 #include "study/reference/lame_cylinder.h"
 #include "study/reference/piston.h"
+#include "study/reference/probe_curve.h"
 #include "study/reference/shock_slab.h"
 
 namespace mpmice::study {
@@ -24,6 +25,11 @@ const std::vector<Reference>& registry() {
        "|p / p5 - 1| of the reflected plateau's mean pressure at the last output against the rigid-wall "
        "reflection of the scene's shock (configs/shock_slab.yaml; exact for a large solid-to-gas impedance ratio)",
        [](const RunFiles& r) { return slabPressureError(r.dir, r.name, r.scene); }},
+      {"probe_curve",
+       "rms(u_run - u_ref) / rms(u_ref) of the probe column `reference_column` of the run's <scene>_probes.csv against "
+       "the curve `reference_curve`, on the curve's samples inside the run's time span (the flap's tip against "
+       "MPM + OpenFOAM)",
+       [](const RunFiles& r) { return probeCurveError(r); }, true},
   };
   return refs;
 }

@@ -8,10 +8,13 @@
 #  3. --resume: every point skipped, the same CSV rows;
 #  4. a point stopped by its time limit: status timeout, exit 3, the CSV still written;
 #  5. two points through `coupler run` (MPMD, explicit_parallel on 1 + 1 ranks): ok, finite errors;
-#  6. SIGTERM to the study: forwarded to the running point, exit 143, no result, nothing left.
-#   run_study.sh BUILD_DIR TINY_CYLINDER_YAML
+#  6. SIGTERM to the study: forwarded to the running point, exit 143, no result, nothing left;
+#  7. the probe_curve reference: the flap (dx 0.1, 0.05 s) with each solid transport against the
+#     shipped MPM + OpenFOAM tip curve: ok, distinct errors, each equal to rms_diff / rms_first of
+#     benchmarks/coupled/flap/curve_difference.sh on the point's probes file (an independent awk).
+#   run_study.sh BUILD_DIR TINY_CYLINDER_YAML SOURCE_DIR
 set -u
-bin=$1 scene=$2 status=0
+bin=$1 scene=$2 src=$3 status=0
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 study=$bin/study/study
@@ -146,6 +149,36 @@ grep -q "stopped by SIGTERM during point 1" run6.txt || fail "the stop is not re
 [ ! -e stop/001_0.05/result.yaml ] || fail "a stopped point has a result"
 for _ in $(seq 50); do pgrep -f "$work/stop/001_0.05/scene.yaml" >/dev/null || break; sleep 0.1; done
 pgrep -af "$work/stop/001_0.05/scene.yaml" && fail "the stopped point's program is still running"
+
+# 7. A probe's record against a reference curve.
+cat >curve.yaml <<EOS
+study: curve
+scene: $src/configs/flap_mpmice.yaml
+reference: probe_curve
+reference_curve: $src/configs/studies/flap_openfoam_tip.csv
+reference_column: tip_ux
+time_limit: 90
+set: {mesh.spacing: 0.1, time.end: 0.05, output.interval: 0}
+points:
+  - {coupling.solid_transport: mpm}
+  - {coupling.solid_transport: ice}
+EOS
+"$study" curve.yaml --out curve >run7.txt 2>&1
+rc=$?
+cat run7.txt
+[ $rc -eq 0 ] || fail "the probe_curve study exited $rc"
+cat curve/curve.csv
+awk -F, 'NR > 1 && ($10 != "ok" || $3 == "nan" || !($3 + 0 > 0)) { print "FAIL: probe_curve row " NR - 1 ": " $0; bad = 1 }
+         END { exit bad || NR != 3 }' curve/curve.csv || fail "probe_curve CSV"
+[ "$(tail -n +2 curve/curve.csv | cut -d, -f3 | sort -u | wc -l)" -eq 2 ] || fail "the two transports gave one error"
+for p in 001_mpm 002_ice; do
+  err=$(awk -F, -v p="$p" 'NR > 1 && $12 == p { print $3 }' curve/curve.csv)
+  ref=$(bash "$src/benchmarks/coupled/flap/curve_difference.sh" "$src/configs/studies/flap_openfoam_tip.csv" \
+          "curve/$p/flap_mpmice_probes.csv" | awk -F, 'NR == 2 { printf "%.10g", $5 / $6 }')
+  echo "probe_curve $p: study $err, curve_difference.sh $ref"
+  awk -v a="$err" -v b="$ref" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d <= 1e-6 * b) }' ||
+    fail "probe_curve $p: the study's error $err is not curve_difference.sh's $ref"
+done
 
 [ $status -eq 0 ] && echo "study_tiny_cylinder: ok"
 exit $status

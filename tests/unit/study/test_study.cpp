@@ -17,6 +17,7 @@
 #include "study/pareto.h"
 #include "study/point_run.h"
 #include "study/reference/piston.h"
+#include "study/reference/probe_curve.h"
 #include "study/reference/references.h"
 #include "study/reference/shock_slab.h"
 #include "study/study_file.h"
@@ -71,6 +72,20 @@ class StudyFileTest : public ::testing::Test {
       return e.what();
     }
     return "";
+  }
+  /// `body` as a whole study file is refused by readStudy with an error that starts with the file
+  /// and holds `key` and `says`.
+  void expectRefused(const std::string& body, const std::string& key, const std::string& says) {
+    const std::string f = write(body, "# a bad study\n");
+    try {
+      (void)readStudy(f);
+      ADD_FAILURE() << "accepted:\n" << body;
+    } catch (const StudyError& e) {
+      const std::string w = e.what();
+      EXPECT_EQ(w.rfind(f + ": ", 0), 0u) << w;
+      EXPECT_NE(w.find(key), std::string::npos) << w;
+      EXPECT_NE(w.find(says), std::string::npos) << w;
+    }
   }
   fs::path dir_;
 };
@@ -268,16 +283,7 @@ TEST_F(StudyFileTest, OneFactorAtATimeBadInputNamesTheFileAndTheKey) {
                 "slices: [{time.cfl: all, spacing: all}]\n", "'slices[0].spacing'", "`all` needs a factor"},
            Case{"base: {time.cfl: 0.4}\nfactors: {time.cfl: [0.1]}\npoints: [{time.cfl: 0.2}]\n", "'points'", "not both"},
        }) {
-    const std::string f = write(head + c.body, "# a bad study\n");
-    try {
-      (void)readStudy(f);
-      ADD_FAILURE() << "accepted:\n" << c.body;
-    } catch (const StudyError& e) {
-      const std::string w = e.what();
-      EXPECT_EQ(w.rfind(f + ": ", 0), 0u) << w;
-      EXPECT_NE(w.find(c.key), std::string::npos) << w;
-      EXPECT_NE(w.find(c.says), std::string::npos) << w;
-    }
+    expectRefused(head + c.body, c.key, c.says);
   }
 }
 
@@ -317,6 +323,31 @@ TEST_F(StudyFileTest, AKeyTheSceneDoesNotKnowIsAnErrorNamingTheKeyAndTheStudyFil
   EXPECT_NE(e2.find(g + ": point 2 (mpm.shape_function: quartic)"), std::string::npos) << e2;
 }
 
+TEST_F(StudyFileTest, AProbeCurveReferenceReadsItsCurveRelativeToTheStudyFile) {
+  std::ofstream(dir_ / "tip.csv") << "# reference\nstep,time,tip_ux\n0,0,0\n1,0.01,0.001\n";
+  const std::string head = "scene: " + std::string(TINY_CYLINDER) + "\nreference: probe_curve\n";
+  const Study s = readStudy(write("reference_curve: tip.csv\nreference_column: tip_ux\naxes: {mesh.spacing: [0.1]}\n", head));
+  EXPECT_EQ(s.referenceCurve, (dir_ / "tip.csv").lexically_normal().string());
+  EXPECT_EQ(s.referenceColumn, "tip_ux");
+  struct Case {
+    std::string body, key, says;
+  };
+  for (const Case& c : {
+           Case{head + "reference_column: tip_ux\naxes: {mesh.spacing: [0.1]}\n", "'reference_curve'", "required with the reference probe_curve"},
+           Case{head + "reference_curve: tip.csv\naxes: {mesh.spacing: [0.1]}\n", "'reference_column'", "required with the reference probe_curve"},
+           Case{head + "reference_curve: none.csv\nreference_column: tip_ux\naxes: {mesh.spacing: [0.1]}\n", "'reference_curve'", "none.csv: cannot read the file"},
+           Case{head + "reference_curve: tip.csv\nreference_column: tip_uy\naxes: {mesh.spacing: [0.1]}\n", "'reference_curve'", "no column 'tip_uy'"},
+           Case{"scene: " + std::string(TINY_CYLINDER) + "\nreference: lame_cylinder\nreference_curve: tip.csv\naxes: {mesh.spacing: [0.1]}\n",
+                "'reference_curve'", "only a reference that reads a curve takes it (probe_curve); this study's is lame_cylinder"},
+       }) {
+    expectRefused(c.body, c.key, c.says);
+  }
+  std::ofstream(dir_ / "one.csv") << "time,tip_ux\n0,0\n";
+  EXPECT_NE(errorOf(write("reference_curve: one.csv\nreference_column: tip_ux\naxes: {mesh.spacing: [0.1]}\n", head))
+                .find("at least 2 rows"),
+            std::string::npos);
+}
+
 TEST_F(StudyFileTest, BadInputNamesTheFileAndTheKey) {
   const std::string head = "scene: " + std::string(TINY_CYLINDER) + "\n";
   struct Case {
@@ -339,16 +370,7 @@ TEST_F(StudyFileTest, BadInputNamesTheFileAndTheKey) {
            Case{head + "reference: lame_cylinder\nprogram: coupler_run\naxes: {ranks: [1, 2]}\n", "'ranks'", "coupling.ranks.mpm"},
            Case{head + "reference: lame_cylinder\naxes: {ranks: [0]}\n", "'ranks'", ">= 1"},
        }) {
-    const std::string f = write(c.body, "# a bad study\n");
-    try {
-      (void)readStudy(f);
-      ADD_FAILURE() << "accepted:\n" << c.body;
-    } catch (const StudyError& e) {
-      const std::string w = e.what();
-      EXPECT_EQ(w.rfind(f + ": ", 0), 0u) << w;
-      EXPECT_NE(w.find(c.key), std::string::npos) << w;
-      EXPECT_NE(w.find(c.says), std::string::npos) << w;
-    }
+    expectRefused(c.body, c.key, c.says);
   }
 }
 
@@ -433,13 +455,89 @@ TEST(References, RegistryByNameAndTheValidChoices) {
   EXPECT_EQ(findReference("lame_cylinder").name, "lame_cylinder");
   EXPECT_EQ(findReference("piston").name, "piston");
   EXPECT_EQ(findReference("shock_slab").name, "shock_slab");
-  EXPECT_EQ(referenceNames(), "lame_cylinder, piston, shock_slab");
+  EXPECT_EQ(findReference("probe_curve").name, "probe_curve");
+  EXPECT_TRUE(findReference("probe_curve").readsCurve);
+  EXPECT_FALSE(findReference("lame_cylinder").readsCurve);
+  EXPECT_EQ(referenceNames(), "lame_cylinder, piston, shock_slab, probe_curve");
   try {
     (void)findReference("flap_reference_curve");
     FAIL() << "an unknown reference was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'flap_reference_curve' is not a reference (valid: lame_cylinder, piston, shock_slab)"),
+    EXPECT_NE(std::string(e.what()).find("'flap_reference_curve' is not a reference (valid: lame_cylinder, piston, "
+                                         "shock_slab, probe_curve)"),
               std::string::npos) << e.what();
+  }
+}
+
+// probe_curve: the run's record interpolated at the reference's samples inside the run's span.
+// A sine against the same sine shifted by a constant c: rms of the difference c, relative c / rms
+// of the reference; a run sampled more coarsely than the reference (linear between its rows);
+// a run shorter than the reference compared on its own span only.
+TEST(References, ProbeCurveDifferenceOnTheReferencesSamplesInsideTheRun) {
+  mpmice::core::TimeSeries ref, run, coarse, shortRun;
+  for (int i = 0; i <= 500; ++i) {
+    const double t = 0.01 * i;
+    ref.t.push_back(t);
+    ref.u.push_back(0.1 + 0.05 * std::sin(4 * t));
+  }
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = 0.005 * i + 0.001;  // other times than the reference's; starts after it
+    run.t.push_back(t);
+    run.u.push_back(0.1 + 0.05 * std::sin(4 * t) + 0.02);
+  }
+  const CurveDifference d = curveDifference(ref, run);
+  EXPECT_EQ(d.samples, 500u);  // t = 0.01 .. 5.0: 0 is before the run's first row (0.001)
+  EXPECT_NEAR(d.tFirst, 0.01, 1e-12);
+  EXPECT_NEAR(d.tLast, 5.0, 1e-12);
+  EXPECT_NEAR(d.mean, 0.02, 1e-4);  // the interpolation's error: 0.05 x 16 x 0.005^2 / 8
+  EXPECT_NEAR(d.rms, 0.02, 1e-4);
+  double r2 = 0;
+  for (std::size_t i = 1; i <= 500; ++i) r2 += ref.u[i] * ref.u[i];
+  EXPECT_NEAR(d.rmsReference, std::sqrt(r2 / 500), 1e-12);
+  EXPECT_NEAR(d.relative(), 0.02 / d.rmsReference, 1e-4);
+  // A linear record against a linear reference: exact however coarse.
+  mpmice::core::TimeSeries lin, linRun;
+  for (int i = 0; i <= 100; ++i) {
+    lin.t.push_back(0.01 * i);
+    lin.u.push_back(1 + 2 * 0.01 * i);
+  }
+  linRun.t = {0.0, 0.37, 1.0};
+  linRun.u = {1.0 + 0.5, 1.74 + 0.5, 3.0 + 0.5};
+  const CurveDifference l = curveDifference(lin, linRun);
+  EXPECT_EQ(l.samples, 101u);
+  EXPECT_NEAR(l.rms, 0.5, 1e-12);
+  EXPECT_NEAR(l.largest, 0.5, 1e-12);
+  // A run to 1 s against the 5 s reference: the first second only.
+  for (std::size_t i = 0; i < run.t.size() && run.t[i] <= 1.0; ++i) {
+    shortRun.t.push_back(run.t[i]);
+    shortRun.u.push_back(run.u[i] - 0.02 + (run.t[i] > 0.5 ? 0.1 : 0.0));
+  }
+  const CurveDifference s = curveDifference(ref, shortRun);
+  EXPECT_NEAR(s.tLast, 0.99, 1e-12);
+  EXPECT_NEAR(s.largest, 0.1, 1e-3);
+  EXPECT_GT(s.largestTime, 0.5);
+}
+
+TEST(References, ProbeCurveThatCannotBeComparedIsAnError) {
+  mpmice::core::TimeSeries ref, run, zero;
+  ref.t = {0.0, 1.0, 2.0};
+  ref.u = {1.0, 1.0, 1.0};
+  run.t = {2.5, 3.0};
+  run.u = {1.0, 1.0};
+  try {
+    (void)curveDifference(ref, run);
+    FAIL() << "no shared samples accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("holds 0 of the reference curve's samples"), std::string::npos) << e.what();
+  }
+  zero.t = ref.t;
+  zero.u = {0.0, 0.0, 0.0};
+  run.t = {0.0, 2.0};
+  try {
+    (void)curveDifference(zero, run);
+    FAIL() << "a zero reference accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the reference curve is 0"), std::string::npos) << e.what();
   }
 }
 
