@@ -1,12 +1,11 @@
 // The flap tip figures (tip_metrics.h) on synthetic signals with known answers: a sine about an
 // offset, a damped step response (first peak and damped period in closed form), the same with
 // high-frequency noise (no spurious crossings; smoothing removes the bias of the peak). The probes
-// CSV reader is core's (tests/unit/core/test_time_series.cpp).
+// CSV reader is core's (tests/unit/io/test_time_series.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "tip_metrics.h"
 
