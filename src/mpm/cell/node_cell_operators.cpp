@@ -330,6 +330,22 @@ void NodeCellOperators::applyCellMomentumIncrement(int material, const Field& dp
   // spread). Node-to-cell averaging the nodes' changes instead moved the energy of one cell's
   // increment into its neighbours (a crushing foam's top particles cooled 2 K a step by it).
   meanNodeVelocity(nodeScratch_, vL, massFloor_, nodeScratch_);
+  if (forceWorkStamp_ == generation_) {
+    // The forces' work is booked at the step's end velocity: a node's gain from the increments,
+    // m dv . (v_old + v_new) / 2, is the forces' share dt f . dv / 2 (the particles' stress work:
+    // they deform with dv) plus the increments' own, m dv . ((v_old + v_new) / 2 - dt f / (2 m)). Walls'
+    // constrained components do not move and take neither (bcs_.apply zeroes them).
+    const double* gm = grid_.mass.data();
+    const double half = 0.5 * forceWorkDt_;
+    for (int d = 0; d < dim; ++d) {
+      double* o = nodeScratch_.data(d);
+      const double* f = grid_.force.data(d);
+      for (std::int64_t k = 0; k < grid_.numNodes(); ++k)
+        if (gm[k] > workFloor_ && gm[k] > massFloor_) o[k] -= half * f[k] / gm[k];
+    }
+    bcs_.apply(nodeScratch_);
+    forceWorkShifted_ = generation_;
+  }
   if (gotScratch_.npts() == 0) gotScratch_ = Field("kinetic_got", Centering::Cell, cells_, 1, 0);
   gotScratch_.fill(0.0);
   addCellVectorPower(material, cellVector_, nodeScratch_, -1.0, gotScratch_);

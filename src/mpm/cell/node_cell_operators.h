@@ -185,7 +185,24 @@ class NodeCellOperators {
   /// energy change). The nodes take a smoothed increment (each node the mass-weighted mean of its
   /// cells'), and walls stop constrained components, so they take less: the solid gets the
   /// difference as heat (addCellEnergy), and the step stays conservative.
+  /// With bookForceWorkAtStepEnd(dt) this step, what the nodes gained is counted at the node
+  /// velocity less dt f / (2 m) (f the grid's internal, body and load force, m the node mass; nodes
+  /// above the work floor, unconstrained components): the increments' share of the forces' work,
+  /// dt f . dv / 2 at each node, goes to the stress work instead of to the heat.
   [[nodiscard]] const core::Field& kineticDeficit(int material) const { return deficit_.at(material); }
+  /// The grid forces' work of this step is counted at the node velocity the step ends with, after
+  /// the exchange's increments (the particles deform with them; MPM's grid count of the stress
+  /// work takes that velocity, and the models' own count follows the deformation):
+  /// MpmSolver::updateGrid calls this with the step's dt, and applyCellMomentumIncrement then
+  /// books the increments' share of the forces' work (kineticDeficit) to the stress work rather
+  /// than to the heat, whichever count mpm.stress_work reports. For this step only.
+  void bookForceWorkAtStepEnd(double dt) {
+    forceWorkDt_ = dt;
+    forceWorkStamp_ = generation_;
+  }
+  /// applyCellMomentumIncrement booked a share of the forces' work this step (MpmSolver's ledger
+  /// follows the forces' work to the end velocity then).
+  [[nodiscard]] bool forceWorkShifted() const { return forceWorkShifted_ == generation_; }
   /// Adds per-cell forces on material m (owned cells, 3 components) to the external node force:
   /// each cell's force shared among the particles of m in it in proportion to their mass, each
   /// share given to the particle's nodes with its own shape function (the same weights as its
@@ -339,6 +356,9 @@ class NodeCellOperators {
   std::vector<double> stressForce_;              // per particle: V iso, V ex, n (addCellPressureStress)
   std::uint64_t stressForceStamp_ = 0;
   double workFloor_ = 0;
+  double forceWorkDt_ = 0;            // bookForceWorkAtStepEnd(): the step's dt
+  std::uint64_t forceWorkStamp_ = 0;  // and its generation
+  std::uint64_t forceWorkShifted_ = 0;  // the generation applyCellMomentumIncrement booked it in
   std::vector<unsigned char> openFace_;        // openFaceNodes()
   std::vector<std::int64_t> openSource_;       // openFaceNodes(): the node q_k is read at
   std::vector<double> openQ_;                  // addCellPressureStress: q at the open-face nodes (else 0)

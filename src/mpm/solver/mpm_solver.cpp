@@ -628,30 +628,63 @@ void MpmSolver::updateGrid() {
   const auto vn = components(g.velocity);
   const auto vl = components(g.velocityL);
   const auto fe = components(g.externalForce);
-  double wext = 0, wdamp = 0;
+  const auto fi = components(g.force);
+  double wext = 0, wdamp = 0, wforce = 0;
   for (std::int64_t k = 0; k < n; ++k) {
-    double s = 0, sd = 0;
+    double s = 0, sd = 0, sf = 0;
     if (m[k] > floor)
       for (int d = 0; d < dim; ++d) {
         const double vbar = 0.5 * (vn[d][k] + vl[d][k]);
         s += fe[d][k] * vbar;
         sd -= c * m[k] * vn[d][k] * vbar;
+        sf += fi[d][k] * vbar;
       }
     w[k] = dt * s;
     const double nw = nwk[k];
     wext += nw * w[k];
     wdamp += nw * dt * sd;
+    wforce += nw * dt * sf;
   }
   ledger_.damping += wdamp;
   ledger_.integration += nodeKinetic(g.velocityL) - ledger_.keNodes - wext - wdamp;
-  if (gridStressWork_) addStressWork();
+  // The forces' work so far, for gridToParticles: a coupled step's exchange increments still move
+  // the nodes after this (NodeCellOperators::applyCellMomentumIncrement), and the particles deform
+  // with them.
+  forceWorkUpdate_ = wforce;
+  cells_->bookForceWorkAtStepEnd(dt);
+}
+
+double MpmSolver::forceWork() const {
+  // sum_i dt f_i . (v_i + v_L,i) / 2 over the nodes above the acceleration floor (the work the
+  // grid's internal, body and load forces do at the mean node velocity), the ranks' shared nodes
+  // once.
+  const Grid& g = *grid_;
+  const double* m = g.mass.data();
+  const double* nwk = nodeWeight_.data();
+  const auto vn = components(g.velocity);
+  const auto vl = components(g.velocityL);
+  const auto f = components(g.force);
+  double w = 0;
+  for (std::int64_t k = 0; k < g.numNodes(); ++k) {
+    if (!(m[k] > accelFloor_)) continue;
+    double s = 0;
+    for (int d = 0; d < scene_.mesh.dim(); ++d) {
+      const double vbar = 0.5 * (vn[d][k] + vl[d][k]);
+      s += f[d][k] * vbar;
+    }
+    w += nwk[k] * dt_ * s;
+  }
+  return w;
 }
 
 void MpmSolver::addStressWork() {
   // The work of each particle's stress in this step as the grid update realised it: the force the
   // particle put on node i, -V_p sigma_p grad w_ip (the stress and volume computeInternalForces
   // used, unchanged until gridToParticles in every scheme), times the node's mean velocity
-  // (v_n + v_L) / 2: dW_p = dt V_p sigma_p : grad(v_mean)_p. Summed over the particles it is the
+  // (v_n + v_L) / 2: dW_p = dt V_p sigma_p : grad(v_mean)_p, v_L as the step ends (a coupled
+  // step's exchange increments included: the particles deform with them, and NodeCellOperators
+  // books the forces' share of the increments' kinetic energy here rather than to the heat,
+  // bookForceWorkAtStepEnd). Summed over the particles it is the
   // kinetic energy the internal forces gave the nodes (the energy update of the grid is exact:
   // m (v_L^2 - v_n^2) / 2 = dt f . v_mean), so the stored (elastic + plastic) energy and the
   // kinetic energy exchange it without a truncation error; the models' own midpoint stress power
@@ -687,6 +720,12 @@ void MpmSolver::addStressWork() {
 
 void MpmSolver::gridToParticles() {
   Grid& g = *grid_;
+  // The grid count of the stress work at the node velocity the step ends with (after a coupled
+  // step's exchange increments, whose kinetic deficit left the forces' share of them to the
+  // stress work, NodeCellOperators::bookForceWorkAtStepEnd); the ledger follows the forces' work
+  // to the same velocity in either count.
+  if (gridStressWork_) addStressWork();
+  if (cells_->forceWorkShifted()) ledger_.integration += forceWork() - forceWorkUpdate_;
   // The grid's kinetic energy now (after any coupling increments) against the particles' after.
   const double keFinal = nodeKinetic(g.velocityL);
   const auto vL = components(g.velocityL);

@@ -242,6 +242,8 @@ class MpmSolver {
   /// Adds each particle's stress work of this step, as the grid update realised it, to its work
   /// (end of updateGrid).
   void addStressWork();
+  /// sum_i dt f_i . (v_i + v_L,i) / 2 over the nodes that move (the grid's forces' work, updateGrid).
+  [[nodiscard]] double forceWork() const;
   /// This rank's share of sum_nodes 1/2 m |v|^2 (each mesh node counted once over all ranks).
   [[nodiscard]] double nodeKinetic(const core::Field& v) const;
   /// This rank's particles: kinetic energy and stress work.
@@ -295,6 +297,7 @@ class MpmSolver {
   std::string removalReport_;
   bool gridStressWork_ = false;     // mpm.stress_work: grid (addStressWork) or material (the models)
   std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
+  double forceWorkUpdate_ = 0;       // gridStressWork_: forceWork() at the grid update (before increments)
   std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;

@@ -60,6 +60,40 @@ double sum(const core::Field& f, int comp = 0) {
   return s;
 }
 
+// After the grid update: a momentum increment of (0.2, -0.1) times its mass in one cell of the
+// block (3, 2[, 2]), applied (applyCellMomentumIncrement); what the cell's view charged for it,
+// dp . (u_L + dv / 2), and the node velocities before it. Checks that the kinetic deficit is zero
+// in every other cell.
+struct CellIncrement {
+  int i, j, k;
+  double gain = 0;
+  core::Field vOld;
+};
+CellIncrement applyCellIncrement(MpmSolver& solver) {
+  const int dim = solver.scene().mesh.dim();
+  NodeCellOperators& ops = solver.cells();
+  const SolidCellState& cs = ops.cellState(0);
+  core::Field pL("pL", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+  ops.cellLagrangianMomentum(0, pL);
+  CellIncrement c{3, 2, dim == 3 ? 2 : 0, 0.0, solver.grid().velocityL};
+  core::Field dp("dp", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
+  const double m = cs.mass(c.i, c.j, c.k);
+  dp(c.i, c.j, c.k, 0) = 0.2 * m;
+  dp(c.i, c.j, c.k, 1) = -0.1 * m;
+  ops.applyCellMomentumIncrement(0, dp);
+  for (int d = 0; d < dim; ++d) {
+    const double p = dp(c.i, c.j, c.k, d);
+    c.gain += p * (pL(c.i, c.j, c.k, d) / m + 0.5 * p / m);
+  }
+  const core::Field& def = ops.kineticDeficit(0);
+  core::forEach(def.box(), [&](int i, int j, int k) {
+    if (i != c.i || j != c.j || k != c.k) {
+      EXPECT_EQ(def(i, j, k), 0.0) << dim << " cell " << i << "," << j << "," << k;
+    }
+  });
+  return c;
+}
+
 }  // namespace
 
 // Every node's value is shared out completely among the mesh cells around it.
@@ -486,34 +520,72 @@ TEST(NodeCellOperators, KineticDeficitIsBookedToTheCellTheIncrementCameFrom) {
   for (int dim : {2, 3}) {
     MpmSolver solver(scene(dim), self());
     start(solver);
-    NodeCellOperators& ops = solver.cells();
-    const SolidCellState& cs = ops.cellState(0);
     solver.computeInternalForces();
     solver.updateGrid();
-    core::Field pL("pL", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
-    ops.cellLagrangianMomentum(0, pL);
-    const core::Field vOld = solver.grid().velocityL;
-    core::Field dp("dp", core::Centering::Cell, cs.mass.box(), 3, 0, 0.0);
-    const int ci = 3, cj = 2, ck = dim == 3 ? 2 : 0;
-    const double m = cs.mass(ci, cj, ck);
-    dp(ci, cj, ck, 0) = 0.2 * m;
-    dp(ci, cj, ck, 1) = -0.1 * m;
-    ops.applyCellMomentumIncrement(0, dp);
-    const core::Field& def = ops.kineticDeficit(0);
-    core::forEach(def.box(), [&](int i, int j, int k) {
-      if (i != ci || j != cj || k != ck) {
-        EXPECT_EQ(def(i, j, k), 0.0) << dim << " cell " << i << "," << j << "," << k;
-      }
-    });
-    double gain = 0, nodes = 0;
-    for (int d = 0; d < dim; ++d) gain += dp(ci, cj, ck, d) * (pL(ci, cj, ck, d) / m + 0.5 * dp(ci, cj, ck, d) / m);
+    const CellIncrement c = applyCellIncrement(solver);
+    double nodes = 0;
     const Grid& g = solver.grid();
     for (std::int64_t k = 0; k < g.numNodes(); ++k)
       for (int d = 0; d < dim; ++d) {
-        const double a = vOld.data(d)[k], b = g.velocityL.data(d)[k];
+        const double a = c.vOld.data(d)[k], b = g.velocityL.data(d)[k];
         nodes += 0.5 * g.mass.data()[k] * (b * b - a * a);
       }
-    EXPECT_NEAR(def(ci, cj, ck), gain - nodes, 1e-12 * std::abs(gain)) << dim;
+    EXPECT_NEAR(solver.cells().kineticDeficit(0)(c.i, c.j, c.k), c.gain - nodes, 1e-12 * std::abs(c.gain)) << dim;
+  }
+}
+
+// The grid's stress-work count (mpm.stress_work grid, a coupled run's `auto`) takes the node
+// velocity the step ends with, after the exchange's increments (the particles deform with them):
+// the particles' work changes by -sum_i dt f_i . (v_i + v_L,i) / 2 with the final v_L, and the
+// increments' kinetic deficit gives the forces' share of their kinetic energy, sum_i dt f_i . dv_i
+// / 2, to that work instead of to the heat (with either count); MPM's ledger is left with the body
+// forces' work (none here), or with `material` the models' count less the forces' work. With the
+// count taken before the increments the flap's stored work went below zero
+// (docs/mpm.md "Stress work").
+TEST(NodeCellOperators, GridStressWorkTakesTheExchangeIncrementsShareOfTheForcesWork) {
+  for (const char* count : {"grid", "material"}) {
+    for (int dim : {2, 3}) {
+      const bool grid = std::string(count) == "grid";
+      core::Scene sc = scene(dim);
+      sc.mpm.stress_work = count;
+      MpmSolver solver(sc, self());
+      start(solver);
+      auto& p = solver.particles();
+      for (std::size_t i = 0; i < p.size(); ++i) {  // a stress that varies across the block: node forces
+        p.stress[kXX][i] = 2e3 * p.x[0][i] + 500.0 * p.x[1][i];
+        p.stress[kYY][i] = -1e3 * p.x[1][i];
+        p.stress[kXY][i] = 300.0 * p.x[0][i] * p.x[1][i];
+      }
+      double work0 = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) work0 += p.work[i];
+      solver.computeInternalForces();
+      solver.updateGrid();
+      const CellIncrement c = applyCellIncrement(solver);
+      const Grid& g = solver.grid();
+      double nodes = 0, share = 0, force = 0, fend = 0;
+      for (std::int64_t k = 0; k < g.numNodes(); ++k)
+        for (int d = 0; d < dim; ++d) {
+          const double a = c.vOld.data(d)[k], b = g.velocityL.data(d)[k], f = g.force.data(d)[k];
+          nodes += 0.5 * g.mass.data()[k] * (b * b - a * a);
+          share += 0.5 * solver.stepSize() * f * (b - a);
+          force += std::abs(f);
+          fend += solver.stepSize() * f * 0.5 * (g.velocity.data(d)[k] + b);
+        }
+      ASSERT_GT(force, 0.0) << dim;
+      ASSERT_GT(std::abs(share), 1e-6 * std::abs(c.gain)) << dim;  // the increment moves nodes the forces act on
+      // The heat does not depend on which count is reported.
+      EXPECT_NEAR(solver.cells().kineticDeficit(0)(c.i, c.j, c.k), c.gain - nodes + share, 1e-10 * std::abs(c.gain))
+          << count << " " << dim;
+      solver.gridToParticles();
+      double work1 = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) work1 += p.work[i];
+      // grid: the work is the forces' at the end velocity, and the ledger is left with nothing (no
+      // body forces); material: the ledger is the models' count less that.
+      if (grid) {
+        EXPECT_NEAR(work1 - work0, -fend, 1e-10 * std::abs(fend)) << dim;
+      }
+      EXPECT_NEAR(solver.energies().integration, (work1 - work0) + fend, 1e-10 * std::abs(fend)) << count << " " << dim;
+    }
   }
 }
 

@@ -101,8 +101,12 @@ TEST(MpmIceEnergyBudget, ClosedBoxSolidAtRestPressureJump1000Steps) {
         v.name, drift, b.scale, b.solid.heat - b.heat0, b.solid.transfer, b.solid.integration, b.solid.damping, closure,
         (b.fluidMass1 - b.fluidMass0) / b.fluidMass0);
     EXPECT_LT(std::abs(closure), 1e-11) << v.name;
-    if (std::string(v.stressWork) == "material")  // the models' midpoint stress power: O(dt^2) a step, named
-      EXPECT_GT(std::abs(b.solid.integration), 1e-9 * b.scale) << v.name;
+    // The models' midpoint stress power: O(dt^2) a step, named (1.9e-4 J, 5.3e-10 of the scale;
+    // before the forces' share of the exchange increments went to the stress work it was 0.455 J,
+    // that share counted twice, as heat and in the models' stress power: docs/mpm.md "Stress
+    // work"), and apart from the grid count's round-off (below 1e-12 of the scale).
+    if (std::string(v.stressWork) == "material")
+      EXPECT_GT(std::abs(b.solid.integration), 1e-10 * b.scale) << v.name;
     else
       EXPECT_LT(std::abs(b.solid.integration), 1e-12 * b.scale) << v.name << ": stress work against the grid's";
     if (&v == &variants[0]) {
