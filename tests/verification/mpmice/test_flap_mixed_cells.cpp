@@ -11,8 +11,9 @@
 //    1e15) stays below what the flow dissipates: (p_in - p_out) Q t, the mechanical energy the
 //    channel's fixed inflow and outflow pressures take from the flow (130 Pa x 40 m^2/s x t).
 // The scene moves the solid's volume with MPM's face transport (coupling.solid_transport: mpm,
-// src/ice/face/solid_faces.h). Measured (this test, dx = 0.1, t = 0.3 s): tip ux 0.14048 m at
-// 1 atm, 0.14159 m at 10 atm (+0.79 %); flap heat +112 J and +100 J against the flow's 1560 J.
+// src/ice/face/solid_faces.h). Measured (this test, dx = 0.1, t = 0.3 s, the scene's GIMP): tip ux
+// 0.10999 m at 1 atm, 0.11111 m at 10 atm (+1.02 %); flap heat +101.9 J and +91.6 J against the
+// flow's 1560 J (quadratic B-splines: 0.13962 / 0.14136 m, +1.25 %; +123.7 / +108.9 J).
 // With ICE's face fluxes of the smeared fraction (solid_transport: ice, main 4c8cc7e) it was
 // 0.1262 m against 0.0984 m (-22 %) and +570 J / +1463 J (docs/flap.md "Mixed cells").
 #include <gtest/gtest.h>
@@ -147,7 +148,8 @@ TEST(FlapMixedCells, SurfaceMakesLessHeatThanTheFlowDissipates) {
 }
 
 // The tip at 10 atm within 3 % of the tip at 1 atm (issue 14): a uniform pressure level is no
-// load. Measured +1.25 % (0.14136 against 0.13962 m; +0.79 % before the flap's solver_tolerance
+// load. Measured +1.02 % with GIMP (0.11111 against 0.10999 m); bspline2 +1.25 % (0.14136 against
+// 0.13962 m; +0.79 % before the flap's solver_tolerance
 // 1e-6). With ICE's face fluxes of the smeared fraction (solid_transport: ice) -22 %: the gas in
 // the mixed cells was squeezed by the solid volume the node-to-cell average moved into them, with
 // the stiffness gamma p.
@@ -162,10 +164,10 @@ TEST(FlapMixedCells, AmbientPressureDoesNotMoveTheFlap) {
 // internal forces' work on the nodes, which MPM's health check reads) follows the models' own
 // stress power (`material`): the exchange's increments at the surface nodes deform the flap after
 // the grid update, and the count takes the velocity the step ends with (docs/mpm.md "Stress
-// work"). Taken before the increments it fell behind: 7.19 J against 8.46 J at t = 0.3 s (-15 %),
-// and at dx 0.05 below zero by t = 1.2 s (the 5 s run at dx 0.025 stopped at 4.80 s on it).
-// Measured with the end velocity: 8.69 J against 8.46 J (+2.7 %; the two counts differ by the
-// time step's truncation).
+// work"). Taken before the increments it fell behind: 6.16 J against 7.63 J at t = 0.3 s (-19 %;
+// bspline2 7.19 J against 8.46 J, -15 %), and with bspline2 at dx 0.05 below zero by t = 1.2 s
+// (the 5 s run at dx 0.025 stopped at 4.80 s on it). Measured with the end velocity: 7.91 J
+// against 7.62 J (+3.8 %; bspline2 +2.7 %; the two counts differ by the time step's truncation).
 TEST(FlapMixedCells, GridStressWorkFollowsTheModelsStressPower) {
   const FlapRun& grid = runs().first;
   const FlapRun material = runFlap(1.0, kEnd, "", "material");
@@ -178,7 +180,8 @@ TEST(FlapMixedCells, GridStressWorkFollowsTheModelsStressPower) {
 }
 
 // The same with ice.face_pressure: riemann_low_mach (the Riemann terms at every fluid face, scaled
-// down at low Mach numbers and small jumps): measured +0.46 % (0.14339 against 0.14273 m). The
+// down at low Mach numbers and small jumps): measured +0.19 % with GIMP (0.11268 against 0.11247 m;
+// bspline2 +0.46 %, 0.14339 against 0.14273 m). The
 // unscaled riemann fails it (+39 %: 0.27023 against 0.19444 m, in 5.5 times the steps).
 TEST(FlapMixedCells, AmbientPressureDoesNotMoveTheFlapWithRiemannLowMach) {
   const FlapRun one = runFlap(1.0, kEnd, "riemann_low_mach"), ten = runFlap(10.0, kEnd, "riemann_low_mach");
