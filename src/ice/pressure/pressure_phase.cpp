@@ -19,7 +19,6 @@ namespace mpmice::ice {
 using core::forEach;
 
 void IceSolver::computeEquilibriumPressure() {
-  mixesValid_ = false;  // theta, specific volume and kappa change here
   semi_.mobilityFresh = false;
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();

@@ -113,3 +113,51 @@ TEST(IceAdvection, DonorInternalEnergyStaysPositiveWhenFaceValuesExceedItsOwn) {
     EXPECT_NEAR(mom1, 0.0, 1e-13 * mass0 * dx / dt) << lim;
   }
 }
+
+// The advection's slab windows (advection_phase.cpp: the Lagrangian values kept for a few slabs
+// while the state's velocity and energy hold the conserved amounts): the positivity blend (the
+// donor above, along y, the direction of the slabs) and a dropped trace give the same values
+// whether the window holds the whole box (5 columns) or moves (4100 columns: a few rows at a time,
+// the blend and the trace's conversion read the values saved when their rows left it).
+TEST(IceAdvection, BlendAndDroppedTraceAreTheSameWhenTheWindowMoves) {
+  auto run = [](int nx) {
+    core::Scene s;
+    s.name = "donor2d";
+    s.mesh = core::Mesh(2, {0, 0, 0}, {0.1, 0.1, 1}, {nx, 8, 1});  // spacing 0.1
+    s.materials = {test::idealGas("gas")};
+    s.geometry = {test::region("all", test::box({-1, -1, -1}, {1e4, 2, 2}), {{"gas", 1.0}}, 1e5, 1.0)};
+    s.ice.advection = "second_order";
+    s.ice.limiter = "superbee";
+    ice::IceSolver sol(s, test::comm());
+    const double dt = 1e-4, dy = 0.1, V = sol.mesh().cellVolume();
+    // rows 0..4: the 1D test's donor (row 2) between light, cold and dense, hot rows; row 6 a trace
+    const double v[8] = {10, 10, 1, 0.1, 0.1, 0.1, 0.1, 0.1}, e[8] = {2e4, 2e4, 2e5, 2e6, 2e6, 2e6, 5e4, 2e6};
+    auto& m = sol.state().mat[0];
+    core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+      m.theta(i, j, k) = 1.0;
+      m.spvol(i, j, k) = m.lagSpvol()(i, j, k) = v[j];
+      m.mass(i, j, k) = j == 6 ? 1e-210 : V / v[j];
+      m.lagEint()(i, j, k) = e[j] + i % 5;
+      m.lagVel()(i, j, k, 0) = 0.0;
+      m.lagVel()(i, j, k, 1) = j == 6 ? 3.0 + i % 5 : 0.0;
+    });
+    for (int d = 0; d < 2; ++d) m.velFace[d].fill(0.0);
+    for (int i = 0; i < nx; ++i) {
+      m.velFace[1](i, 2, 0) = -0.3 * dy / dt;  // out of row 2 downwards
+      m.velFace[1](i, 3, 0) = 0.5 * dy / dt;   // and upwards
+    }
+    sol.beginStep(dt);
+    sol.advectFluids();
+    EXPECT_GE(sol.positivityBlends(), nx) << nx;
+    std::vector<double> out;  // columns 0..4
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 5; ++i)
+        for (double x : {m.mass(i, j, 0), m.vel(i, j, 0, 0), m.vel(i, j, 0, 1), m.eint(i, j, 0), m.spvol(i, j, 0)})
+          out.push_back(x);
+    return out;
+  };
+  const std::vector<double> whole = run(5), moving = run(4100);
+  ASSERT_EQ(whole.size(), moving.size());
+  for (std::size_t q = 0; q < whole.size(); ++q) EXPECT_EQ(whole[q], moving[q]) << q;
+  EXPECT_EQ(whole[5 * 30 + 2], 3.0) << "the trace keeps its velocity";  // row 6, column 0, u_y
+}
