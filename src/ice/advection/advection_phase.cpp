@@ -707,7 +707,7 @@ void IceSolver::advectFluids() {
     // conserved amounts slab by slab, conserved): what the flux passes read at the faces of slab s
     // lies in slabs s - 2 .. s + 1 (the donor's reconstruction; its isentrope fit and the
     // positivity blend's test of slab s - 1). lagU[d], lagE: the stored cell c's values at c
-    // (pointers offset by the window's first cell, lagFirst). W slabs, at least 4, about
+    // (pointers offset by the stored index of the window's first cell). W slabs, at least 4, about
     // kLagWindowCells cells (the window moves by W - 3 slabs at a time); in 1D all of them.
     constexpr std::int64_t kLagWindowCells = 16384;
     const int storedSlabs = sb.length(top);
@@ -719,7 +719,7 @@ void IceSolver::advectFluids() {
     const double* lagU[3] = {nullptr, nullptr, nullptr};
     const double* lagE = nullptr;
     auto lagPointers = [&] {
-      const std::int64_t first = std::int64_t(winLo - sb.lo[top]) * slabStored;  // lagFirst
+      const std::int64_t first = std::int64_t(winLo - sb.lo[top]) * slabStored;
       double* w = adv_.lagWindow.data();
       for (int d = 0; d < dim; ++d) lagU[d] = w + d * winArray - first;
       lagE = w + dim * winArray - first;
@@ -1104,23 +1104,26 @@ void IceSolver::advectFluids() {
               fluidMassRow(r, j, k, b.lo[0], b.hi[0]);
               fm = adv_.fluidMassRow.data();
             }
+            // The row's first and last owned cells are beside a ghost (in 1D the slab is one cell).
+            const bool sides = moves && (b.lo[0] == owned_.lo[0] || b.hi[0] == owned_.hi[0]);
+            if (sides) keep(c0);
             auto one = [&](int i) {
               const std::int64_t c = c0 + i;
               const double mass = ms[c];
               const bool drop = !(mass > kTraceMass) || mass < kNegligibleMassFraction * fm[i];
               if (drop) adv_.dropCells.push_back(c);
-              const int ii = b.lo[0] + i;
-              if (moves && (drop || edge || ii == owned_.lo[0] || ii == owned_.hi[0])) keep(c);
+              if (moves && (drop || edge)) keep(c);
             };
             int i = 0;
-            for (; i + 4 <= n; i += 4) {  // four at a time (the lanes) where none is dropped nor kept
-              using lanes::v4d, lanes::load;
-              const v4d mass = load(ms + c0 + i);
-              const bool any = lanes::any(~(mass > kTraceMass) | (mass < kNegligibleMassFraction * load(fm + i)));
-              if (any || (moves && (edge || i == 0 || i + 4 == n)))
-                for (int l = 0; l < 4; ++l) one(i + l);
-            }
+            if (!edge)
+              for (; i + 4 <= n; i += 4) {  // four at a time (the lanes) where none is dropped
+                using lanes::v4d, lanes::load;
+                const v4d mass = load(ms + c0 + i);
+                if (lanes::any(~(mass > kTraceMass) | (mass < kNegligibleMassFraction * load(fm + i))))
+                  for (int l = 0; l < 4; ++l) one(i + l);
+              }
             for (; i < n; ++i) one(i);
+            if (sides) keep(c0 + n - 1);
           }
       };
       // The faces of slab s (lo[top] .. hi[top] + 1) in the flux passes' order: with s <= hi[top]
@@ -1196,7 +1199,9 @@ void IceSolver::advectFluids() {
         forSlabLanes(s - 1, blend4, blend1);
         dropCandidates(s - 1);
       }
-      std::sort(adv_.lagKept.begin(), adv_.lagKept.end(), [](const auto& a, const auto& b) { return a.cell < b.cell; });
+      // In increasing cell order as dropCandidates kept them, unless a blend kept its neighbours.
+      if (!adv_.blends.empty())
+        std::sort(adv_.lagKept.begin(), adv_.lagKept.end(), [](const auto& a, const auto& b) { return a.cell < b.cell; });
       adv_.lagKept.erase(std::unique(adv_.lagKept.begin(), adv_.lagKept.end(),
                                      [](const auto& a, const auto& b) { return a.cell == b.cell; }),
                          adv_.lagKept.end());

@@ -162,6 +162,7 @@ void computeCellMixesOver(const IceState& st, const core::Box& box, int dim, Cel
   }
   const Ptr* const ptr = ptrs.data();
   double* const xu[3] = {x.u[0].data(), x.u[1].data(), x.u[2].data()};
+  const double* const pressure = x.pressure ? x.pressure : st.press.data();
   // Stored cell c, o its index in box. NM, DIM > 0: the number of materials and the dimension
   // fixed at compile time (the small loops unroll; the same operations in the same order).
   auto cell = [&]<int NM, int DIM>(std::int64_t c, std::size_t o) {
@@ -179,7 +180,7 @@ void computeCellMixesOver(const IceState& st, const core::Box& box, int dim, Cel
       if (t > 0) dn += t / m.sv[c], kap += t * m.ka[c];
     }
     x.rho[o] = dn;
-    if (x.lowMach) x.p[o] = st.press.data()[c];
+    if (x.lowMach) x.p[o] = pressure[c];
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
   };
@@ -203,7 +204,7 @@ void computeCellMixesOver(const IceState& st, const core::Box& box, int dim, Cel
       kap = sel(on, kap + t * load(m.ka + c), kap);
     }
     lanes::store(x.rho.data() + o, dn);
-    if (x.lowMach) lanes::store(x.p.data() + o, load(st.press.data() + c));
+    if (x.lowMach) lanes::store(x.p.data() + o, load(pressure + c));
     lanes::store(x.z.data() + o, sel((dn > 0) & (kap > 0) & ~solid, lanes::sqrt(dn / kap), zero));
     for (int d = 0; d < DIM; ++d) lanes::store(xu[d] + o, sel(mass > 0, mu[d] / mass, zero));
   };
@@ -601,7 +602,12 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
 // (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
 void IceSolver::computeFacePressure() {
   mixes_.lowMach = riemannLowMach_;
+  // lowMachScale's strain reads the step's equilibrium pressure, as in the stable step and the
+  // face velocities (before the increment): kept by computePressureIncrement.
+  if (riemannLowMach_ && lowMachPressure_.size() == static_cast<std::size_t>(st_.press.npts()))
+    mixes_.pressure = lowMachPressure_.data();
   computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn(), &mixes_);
+  mixes_.pressure = nullptr;
 }
 
 }  // namespace mpmice::ice

@@ -328,6 +328,8 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
 }
 
 void IceSolver::computePressureIncrement() {
+  if (riemannLowMach_)  // the face pressure's lowMachScale reads the equilibrium pressure (ghosts and all)
+    lowMachPressure_.assign(st_.press.data(), st_.press.data() + st_.press.npts());
   if (semiImplicit_) {
     solveSemiImplicit();
   } else {

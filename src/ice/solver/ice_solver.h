@@ -308,6 +308,10 @@ class IceSolver {
   // (forMixBlocks in phase_units.h): a few operations per cell and reader against four arrays of
   // the whole box.
   mutable CellMixes mixes_;
+  // ice.face_pressure: riemann_low_mach: the cell pressure before the pressure increment (stored
+  // box), which the face pressure's mixtures read (lowMachScale), as the stable step's and the
+  // face velocities' do; empty otherwise.
+  std::vector<double> lowMachPressure_;
   // The semi-implicit stable step's mixture impedance per cell (owned box grown by one).
   mutable std::vector<double> impedanceScratch_;
 };

@@ -26,6 +26,8 @@ struct CellMixes {
   std::array<std::vector<double>, 3> u;
   /// Scale the Riemann terms by the faces' Mach number (lowMachScale in face_phase.cpp).
   bool lowMach = false;
+  /// With lowMach: the cell pressures p is made from (stored-box indexed); null: the state's.
+  const double* pressure = nullptr;
 };
 /// Fills x for the owned box grown by one layer (ghosts of mass, velocity, theta, specific
 /// volume and kappa filled); reuses x's storage.
