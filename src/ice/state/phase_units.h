@@ -16,8 +16,9 @@
 namespace mpmice::ice {
 
 /// Mixture density rho, acoustic impedance z = rho c (Wood) and mass-averaged velocity u_d of
-/// every cell of `box` (the owned cells and one layer around them): what the Riemann face
-/// pressure and its rate in the stable step read, computed once per cell (not per face side).
+/// every cell of `box` (the owned cells and one layer around them, or a block of slabs of it:
+/// forMixBlocks): what the Riemann face pressure and its rate in the stable step read, computed
+/// once per cell (not per face side).
 /// A cell holding an external material (a solid, mass > 0) gets z = 0: the Riemann terms act at
 /// faces between fluid cells only (a solid's surface load stays ICE's average face pressure).
 struct CellMixes {
