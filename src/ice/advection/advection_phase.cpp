@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <type_traits>
 
 #include "ice/advection/limiter.h"
@@ -212,7 +213,6 @@ inline double entropyBounded(double ef, double vf, std::int64_t D, std::int64_t 
 }  // namespace
 
 void IceSolver::advectFluids() {
-  mixesValid_ = false;  // mass and velocity change here
   fillMaterialGhosts(true);
   const int dim = mesh_.dim();
   const int nm = numMaterials();
@@ -232,17 +232,11 @@ void IceSolver::advectFluids() {
         adv_.mat[static_cast<std::size_t>(fluids[q])].massFlux[d] =
             core::Field("mass_flux", core::Centering::Cell, owned_.faces(d), 1, 0);
   }
-  // One set of whole-box arrays serves the cell mixtures (computeCellMixes: the stable step to the
-  // face pressure) and the advection's conserved amounts: the mixtures are invalid
-  // from here to the next step's stable step, and the advection writes its arrays before it reads
-  // them. Likewise the face volume fluxes and face pressures (the pressure increment and the face
-  // pressure to the Lagrangian phase; computed again before the next step reads them) hold the
-  // first two fluids' mass fluxes. They are lent here and handed back at the end, storage and all
-  // (no allocation per step).
+  // The face volume fluxes and face pressures (the pressure increment and the face pressure to
+  // the Lagrangian phase; computed again before the next step reads them) hold the first two
+  // fluids' mass fluxes. They are lent here and handed back at the end, storage and all (no
+  // allocation per step).
   auto lend = [&] {
-    std::swap(adv_.energy, mixes_.rho);
-    std::swap(adv_.eint, mixes_.z);
-    for (std::size_t d = 0; d < 3; ++d) std::swap(adv_.momentum[d], mixes_.u[d]);
     for (std::size_t d = 0; d < 3; ++d) {
       if (!fluids.empty()) std::swap(adv_.mat[static_cast<std::size_t>(fluids[0])].massFlux[d], st_.volFlux[d]);
       if (fluids.size() > 1) std::swap(adv_.mat[static_cast<std::size_t>(fluids[1])].massFlux[d], st_.pressFace[d]);
@@ -253,18 +247,7 @@ void IceSolver::advectFluids() {
     decltype(lend)& swap;
     ~HandBack() { swap(); }
   } handBack{lend};
-  // The stored box's size (the mixtures cover one layer less): grown once to exactly that
-  // (resize alone would double the capacity).
-  auto sizeTo = [](std::vector<double>& v, std::size_t n) {
-    if (v.capacity() < n) {
-      std::vector<double>().swap(v);
-      v.reserve(n);
-    }
-    v.resize(n);
-  };
-  for (int d = 0; d < dim; ++d) sizeTo(adv_.momentum[static_cast<std::size_t>(d)], npts);
-  sizeTo(adv_.energy, npts);
-  sizeTo(adv_.eint, npts);
+  adv_.eint.resize(npts);  // the stored box's size, kept from step to step
   // With one fluid advected here the negligible-trace cut-off of the conversion (below) compares
   // its mass after advection with itself: never below kNegligibleMassFraction of it, no fluid
   // mass to sum.
@@ -272,30 +255,39 @@ void IceSolver::advectFluids() {
 
   const std::int64_t strides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   // The conserved amounts of the owned cells of the fluid being advected (advected::k* order): the
-  // mass and m v in the state's own fields, m u, m (e + |u|^2 / 2) and m e in the scratch shared by
-  // the fluids (its velocity and energy are the face values' sources until its conversion below);
-  // null: the momentum beyond the mesh's dimension.
+  // mass, m u, m (e + |u|^2 / 2) and m v in the state's own fields (its velocity and energy, the
+  // face values' sources, are copied to a window of slabs before they are overwritten: lagWindow
+  // below), m e in the scratch shared by the fluids; null: the momentum beyond the mesh's dimension.
   auto accumulators = [&](MaterialState& m, double** a) {
     a[kMass] = m.mass.data();
-    for (int d = 0; d < 3; ++d) a[kMomX + d] = d < dim ? adv_.momentum[static_cast<std::size_t>(d)].data() : nullptr;
-    a[kEnergy] = adv_.energy.data();
+    for (int d = 0; d < 3; ++d) a[kMomX + d] = d < dim ? m.vel.data(d) : nullptr;
+    a[kEnergy] = m.eint.data();
     a[kVolume] = m.spvol.data();
     a[kEint] = adv_.eint.data();
   };
+  // The saved Lagrangian values of stored cell c (AdvectionScratch::lagKept, sorted once pass 2
+  // is done); null where none are saved.
+  auto lagSaved = [&](std::int64_t c) -> const AdvectionScratch::LagCell* {
+    const auto& kept = adv_.lagKept;
+    auto q = std::lower_bound(kept.begin(), kept.end(), c, [](const auto& e, std::int64_t x) { return e.cell < x; });
+    return q != kept.end() && q->cell == c ? &*q : nullptr;
+  };
   // The owned cells in forEach's order (ownedCells_), by rows: f4(c) for the four cells c .. c + 3
   // (the lanes), f1(c) for one (the rest of a row); row(j, k, c) before each row (c its first).
-  auto forOwnedRows = [&](auto&& f4, auto&& f1, auto&& row) {
-    for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
-      for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
-        std::int64_t c = sb.index(owned_.lo[0], j, k);
+  // forRows: the same over the cells of b (owned).
+  auto forRows = [&](const core::Box& b, auto&& f4, auto&& f1, auto&& row) {
+    for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+      for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
+        std::int64_t c = sb.index(b.lo[0], j, k);
         row(j, k, c);
-        int i = owned_.lo[0];
-        for (; i + 3 <= owned_.hi[0]; i += 4, c += 4) f4(c);
-        for (; i <= owned_.hi[0]; ++i, ++c) f1(c);
+        int i = b.lo[0];
+        for (; i + 3 <= b.hi[0]; i += 4, c += 4) f4(c);
+        for (; i <= b.hi[0]; ++i, ++c) f1(c);
       }
   };
-  // The fluids' mass after advection at the owned cells of row (j, k) (more than one fluid: the
-  // negligible-trace cut-off of the conversion, below), as fluid q's conversion reaches the row:
+  auto forOwnedRows = [&](auto&& f4, auto&& f1, auto&& row) { forRows(owned_, f4, f1, row); };
+  // The fluids' mass after advection at the owned cells ilo .. ihi of row (j, k) (more than one
+  // fluid: the negligible-trace cut-off of the conversion, below), as fluid q's pass 2 completes them:
   // each fluid's mass terms (pass 2's, in the same order for every cell: x low, x high, y low,
   // y high, z low, z high) summed over the fluids in order. The fluids before q are converted
   // (their mass, or the trace their conversion dropped), q's mass is accumulated, and those after
@@ -304,11 +296,11 @@ void IceSolver::advectFluids() {
   const std::int64_t faceStrides[3] = {1, owned_.faces(1).length(0),
                                        std::int64_t(owned_.faces(2).length(0)) * owned_.faces(2).length(1)};
   adv_.dropped.resize(static_cast<std::size_t>(nm));
-  auto fluidMassRow = [&](int q, int j, int k) {
-    const int nx = owned_.length(0);
+  auto fluidMassRow = [&](int q, int j, int k, int ilo, int ihi) {
+    const int nx = ihi - ilo + 1;
     adv_.fluidMassRow.assign(static_cast<std::size_t>(nx), 0.0);
     double* out = adv_.fluidMassRow.data();
-    const std::int64_t c0 = sb.index(owned_.lo[0], j, k);
+    const std::int64_t c0 = sb.index(ilo, j, k);
     for (int r : fluids) {
       const MaterialState& m = st_.mat[r];
       const double* ms = m.mass.data();
@@ -332,7 +324,7 @@ void IceSolver::advectFluids() {
       std::int64_t f0[3] = {0, 0, 0};
       for (int d = 0; d < dim; ++d) {
         Fm[d] = adv_.mat[static_cast<std::size_t>(r)].massFlux[d].data();
-        f0[d] = owned_.faces(d).index(owned_.lo[0], j, k);
+        f0[d] = owned_.faces(d).index(ilo, j, k);
       }
       int i = 0;
       for (; i + 4 <= nx; i += 4) {  // the lanes: the same operations, a face with F = 0 a select
@@ -364,7 +356,7 @@ void IceSolver::advectFluids() {
   // velocity, specific volume and internal energy (its velocity and energy, the face values'
   // sources, held the Lagrangian values until here).
   // DIM > 0: the mesh's dimension fixed at compile time (the same operations in the same order).
-  auto convertDim = [&]<int DIM>(int r) {
+  auto convertDim = [&]<int DIM>(int r, auto&& lagAt) {
     const int nd = DIM > 0 ? DIM : dim;
     MaterialState& m = st_.mat[r];
     double* a[kNumAcc];
@@ -372,10 +364,10 @@ void IceSolver::advectFluids() {
     double *ms = m.mass.data(), *e = m.eint.data(), *v = m.spvol.data();
     const auto u = core::components(m.vel);
     const double* vL = m.lagSpvol().data();
-    // The cells' fluid mass after advection, cell c's at fm + (c - fmOff): with one fluid its own
-    // (read before the cell's own write), else the row's (fluidMassRow).
-    const double* fm = a[kMass];
-    std::int64_t fmOff = 0;
+    // The cells the conversion drops as traces (decided as pass 2 completed their slab:
+    // dropCandidates), in increasing order: the next at *nextDrop (the cells come in that order).
+    const std::int64_t* nextDrop = adv_.dropCells.data();
+    const std::int64_t* const dropEnd = nextDrop + adv_.dropCells.size();
     auto& dropped = adv_.dropped[static_cast<std::size_t>(r)];
     dropped.clear();
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
@@ -387,11 +379,18 @@ void IceSolver::advectFluids() {
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
       // mass, are dropped (their specific values, ratios of round-off, grow without bound; the
       // energy they held is audited). They keep the Lagrangian values (velocity and energy: as they are).
-      if (!(mass > kTraceMass) || mass < kNegligibleMassFraction * fm[c - fmOff]) {
+      if (nextDrop != dropEnd && *nextDrop == c) {
+        ++nextDrop;
         if (mass > 0) audit_.add(std::abs(a[kEnergy][c]), c, r);
         if (!oneFluid && (mass != 0 || std::signbit(mass))) dropped.push_back({c, mass});  // not +0: fluidMassRow
         ms[c] = 0;
         v[c] = vL[c];
+        // Its velocity and energy hold m u and m (e + |u|^2 / 2): the Lagrangian values back
+        // (saved when pass 2 completed the cell's mass: dropCandidates).
+        double lu[3], le;
+        lagAt(m, c, lu, le);
+        for (int d = 0; d < nd; ++d) u[d][c] = lu[d];
+        e[c] = le;
         return;
       }
       const double inv = 1.0 / mass;
@@ -431,7 +430,8 @@ void IceSolver::advectFluids() {
       if constexpr (DIM > 0) {
         if (!cold) {
           const v4d mass = load(a[kMass] + c);
-          v4m ok = (mass > kTraceMass) & ~(mass < kNegligibleMassFraction * load(fm + (c - fmOff)));
+          v4m ok = {-1, -1, -1, -1};
+          if (nextDrop != dropEnd && *nextDrop < c + 4) ok = v4m{0, 0, 0, 0};
           const v4d inv = 1.0 / mass;
           v4d ud[DIM], ke = lanes::splat(0.0);
           for (int d = 0; d < DIM; ++d) {
@@ -455,17 +455,13 @@ void IceSolver::advectFluids() {
       }
       for (int l = 0; l < 4; ++l) cell(c + l);
     };
-    forOwnedRows(cellLanes, cell, [&](int j, int k, std::int64_t c) {
-      if (oneFluid) return;
-      fluidMassRow(r, j, k);
-      fm = adv_.fluidMassRow.data();
-      fmOff = c;
-    });
+    forOwnedRows(cellLanes, cell, [](int, int, std::int64_t) {});
   };
-  auto convert = [&](int r) {
-    if (dim == 2) convertDim.template operator()<2>(r);
-    else if (dim == 3) convertDim.template operator()<3>(r);
-    else convertDim.template operator()<0>(r);
+  // lagAt(m, c, u, e): the Lagrangian velocity and energy of stored cell c (after pass 2).
+  auto convert = [&](int r, auto&& lagAt) {
+    if (dim == 2) convertDim.template operator()<2>(r, lagAt);
+    else if (dim == 3) convertDim.template operator()<3>(r, lagAt);
+    else convertDim.template operator()<0>(r, lagAt);
   };
   // Passes 1 and 2 with the scene's reconstruction chosen here, once (Recon).
   auto passes = [&]<bool Second, Limiter L>(Recon<Second, L> rc) {
@@ -629,9 +625,11 @@ void IceSolver::advectFluids() {
       }
     };
 
-    // The conserved amounts of one fluid's owned cells (accumulators): m (mass, as it is), m u,
-    // m (e + |u|^2 / 2), m v (in the specific volume, which nothing below reads), m e.
-    auto conservedDim = [&]<int DIM>(int r) {
+    // The conserved amounts of one fluid's owned cells of slab s (accumulators): m (mass, as it
+    // is), m u and m (e + |u|^2 / 2) in place of u and e (each cell reads its own before it
+    // writes them; the window holds them for the face values: lagWindow), m v (in the specific
+    // volume, which nothing below reads), m e.
+    auto conservedDim = [&]<int DIM>(int r, int s) {
       const int nd = DIM > 0 ? DIM : dim;
       MaterialState& m = st_.mat[r];
       double* a[kNumAcc];
@@ -660,13 +658,16 @@ void IceSolver::advectFluids() {
         st(a[kVolume], mass * ld(v));
         st(a[kEint], mass * ec);
       };
-      forOwnedRows([&](std::int64_t c) { cell.template operator()<lanes::v4d>(c); },
-                   [&](std::int64_t c) { cell.template operator()<double>(c); }, [](int, int, std::int64_t) {});
+      core::Box b = owned_;
+      b.lo[dim - 1] = b.hi[dim - 1] = s;
+      forRows(
+          b, [&](std::int64_t c) { cell.template operator()<lanes::v4d>(c); },
+          [&](std::int64_t c) { cell.template operator()<double>(c); }, [](int, int, std::int64_t) {});
     };
-    auto conserved = [&](int r) {
-      if (dim == 2) conservedDim.template operator()<2>(r);
-      else if (dim == 3) conservedDim.template operator()<3>(r);
-      else conservedDim.template operator()<0>(r);
+    auto conserved = [&](int r, int s) {
+      if (dim == 2) conservedDim.template operator()<2>(r, s);
+      else if (dim == 3) conservedDim.template operator()<3>(r, s);
+      else conservedDim.template operator()<0>(r, s);
     };
 
     // The isentrope fits of the entropy-bounded face state (second order; first order takes the
@@ -701,6 +702,73 @@ void IceSolver::advectFluids() {
         adv_.isenPi.resize(static_cast<std::size_t>(2 * slabStored));
       }
     };
+    // The Lagrangian velocity and energy of the fluid being advected over a window of W
+    // consecutive stored slabs (AdvectionScratch::lagWindow; the state's arrays turn into the
+    // conserved amounts slab by slab, conserved): what the flux passes read at the faces of slab s
+    // lies in slabs s - 2 .. s + 1 (the donor's reconstruction; its isentrope fit and the
+    // positivity blend's test of slab s - 1). lagU[d], lagE: the stored cell c's values at c
+    // (pointers offset by the stored index of the window's first cell). W slabs, at least 4, about
+    // kLagWindowCells cells (the window moves by W - 3 slabs at a time); in 1D all of them.
+    constexpr std::int64_t kLagWindowCells = 16384;
+    const int storedSlabs = sb.length(top);
+    const int W =
+        dim == 1 ? storedSlabs : static_cast<int>(std::min<std::int64_t>(storedSlabs, 4 + kLagWindowCells / slabStored));
+    const std::size_t winArray = static_cast<std::size_t>(W * slabStored);
+    adv_.lagWindow.resize(static_cast<std::size_t>(dim + 1) * winArray);
+    int winLo = sb.lo[top], winEnd = sb.lo[top];  // the slabs held: winLo .. winEnd - 1
+    const double* lagU[3] = {nullptr, nullptr, nullptr};
+    const double* lagE = nullptr;
+    auto lagPointers = [&] {
+      const std::int64_t first = std::int64_t(winLo - sb.lo[top]) * slabStored;
+      double* w = adv_.lagWindow.data();
+      for (int d = 0; d < dim; ++d) lagU[d] = w + d * winArray - first;
+      lagE = w + dim * winArray - first;
+    };
+    // Makes the window of fluid r hold slabs t - 3 .. t (those of the stored box), copying the
+    // state's values of the slabs it did not hold yet; afresh (a new fluid) with restart.
+    auto lagWindowTo = [&](int r, int t, bool restart) {
+      const MaterialState& m = st_.mat[r];
+      t = std::min(t, sb.hi[top]);
+      if (restart) winLo = winEnd = sb.lo[top];
+      const std::size_t S = static_cast<std::size_t>(slabStored);
+      double* w = adv_.lagWindow.data();
+      if (t >= winLo + W) {  // move: the last three slabs held to the front
+        const int lo = std::max(winLo, t - 3);
+        for (int q = 0; q <= dim; ++q) {
+          double* a = w + q * winArray;
+          std::copy(a + (lo - winLo) * S, a + (winEnd - winLo) * S, a);
+        }
+        winLo = lo;
+      }
+      for (; winEnd <= t; ++winEnd) {
+        const std::size_t at = (winEnd - winLo) * S, from = (winEnd - sb.lo[top]) * S;
+        for (int d = 0; d < dim; ++d) std::copy(m.vel.data(d) + from, m.vel.data(d) + from + S, w + d * winArray + at);
+        std::copy(m.eint.data() + from, m.eint.data() + from + S, w + dim * winArray + at);
+      }
+      lagPointers();
+    };
+    // The Lagrangian velocity and energy of stored cell c of the fluid advected last, after its
+    // pass 2: saved (lagKept: the owned cells the blend pass reads and the dropped traces), in
+    // the window, or the state's at a ghost (never converted).
+    const std::int64_t len0 = sb.length(0), len1 = sb.length(1);
+    auto lagAt = [&](const MaterialState& m, std::int64_t c, double* u, double& e) {
+      if (const AdvectionScratch::LagCell* k = lagSaved(c)) {
+        for (int q = 0; q < dim; ++q) u[q] = k->u[q];
+        e = k->e;
+        return;
+      }
+      const int t = sb.lo[top] + static_cast<int>(c / slabStored);
+      if (t >= winLo && t < winEnd) {
+        for (int q = 0; q < dim; ++q) u[q] = lagU[q][c];
+        e = lagE[c];
+        return;
+      }
+      const int i = sb.lo[0] + static_cast<int>(c % len0), j = sb.lo[1] + static_cast<int>(c / len0 % len1),
+                k = sb.lo[2] + static_cast<int>(c / (len0 * len1));
+      if (owned_.contains(i, j, k)) throw std::logic_error("advection: a converted cell's Lagrangian values read");
+      for (int q = 0; q < dim; ++q) u[q] = m.vel.data(q)[c];
+      e = m.eint.data()[c];
+    };
     // The window at slab s (stored slabs s - 1 and s) of fluid r, from the window at slab s - 1
     // (next) or afresh. Each cell's fit is its own: the values of a fit over the whole box.
     auto fitWindow = [&](int r, int s, bool next) {
@@ -708,7 +776,7 @@ void IceSolver::advectFluids() {
       const MaterialState& m = st_.mat[r];
       const std::size_t S = static_cast<std::size_t>(slabStored);
       double *g = adv_.isenGamma.data(), *pi = adv_.isenPi.data();
-      const double *v = m.lagSpvol().data(), *e = m.eint.data();
+      const double *v = m.lagSpvol().data(), *e = lagE;  // the energy from the window (lagWindowTo)
       const std::int64_t lo = std::int64_t(s - 1 - sb.lo[top]) * slabStored;  // slab s - 1's first stored cell
       if (next) {
         std::copy(g + S, g + 2 * S, g);
@@ -987,20 +1055,77 @@ void IceSolver::advectFluids() {
     if (!oneFluid)
       for (int r : fluids) outflowScale(r);
 
-    // One fluid after the other: its outflow scale, isentrope fits and conserved amounts, pass 2
-    // with its blend sums, the blend pass, and its conversion back to primitive values.
+    // One fluid after the other: its outflow scale, isentrope fits, pass 2 slab by slab (each
+    // slab's Lagrangian values into the window, its conserved amounts, its faces) with its blend
+    // sums, the blend pass, and its conversion back to primitive values.
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
       if (m.external) continue;
       if (oneFluid) outflowScale(r);
       fitIsentropes(r);
-      conserved(r);
       FluxPtrs P[3];
       for (int d = 0; d < dim; ++d) P[d] = fluxPtrs(d, r);
+      // The face values' velocity and energy from the window (lagWindowTo; its pointers move with it).
+      auto lagTo = [&](int t, bool restart) {
+        lagWindowTo(r, t, restart);
+        for (int d = 0; d < dim; ++d) {
+          for (int q = 0; q < dim; ++q) P[d].u[q] = lagU[q];
+          P[d].eL = lagE;
+        }
+      };
       const double* ms = m.mass.data();
-      const double *eL = m.eint.data(), *vL = m.lagSpvol().data();
+      const double* vL = m.lagSpvol().data();
       const bool cold = m.eos->coldEnergy(1.0) != 0.0;
       adv_.blends.clear();
+      adv_.lagKept.clear();
+      // Saves the Lagrangian values of stored cell c (in the window) for after its slab leaves it.
+      auto keep = [&](std::int64_t c) {
+        AdvectionScratch::LagCell k{c, {0, 0, 0}, lagE[c]};
+        for (int q = 0; q < dim; ++q) k.u[q] = lagU[q][c];
+        adv_.lagKept.push_back(k);
+      };
+      // Slab t's owned cells that the conversion drops as traces: absent (below kTraceMass) or
+      // below kNegligibleMassFraction of the cell's fluid mass after advection (with one fluid its
+      // own), decided here, once pass 2 has completed the slab's mass (the blend moves none), as
+      // dropCells. Those and the cells beside a ghost (a ghost donor's blend comes from its owner
+      // after pass 2) keep their Lagrangian values where the window moves on (lagAt).
+      adv_.dropCells.clear();
+      const bool moves = W < storedSlabs;
+      auto dropCandidates = [&](int t) {
+        const core::Box b = slab(t);
+        for (int k = b.lo[2]; k <= b.hi[2]; ++k)
+          for (int j = b.lo[1]; j <= b.hi[1]; ++j) {
+            const std::int64_t c0 = sb.index(b.lo[0], j, k);
+            const int n = b.length(0);
+            const bool edge = (dim > 1 && (j == owned_.lo[1] || j == owned_.hi[1])) ||
+                              (dim > 2 && (k == owned_.lo[2] || k == owned_.hi[2]));
+            const double* fm = ms + c0;  // one fluid: its own mass
+            if (!oneFluid) {
+              fluidMassRow(r, j, k, b.lo[0], b.hi[0]);
+              fm = adv_.fluidMassRow.data();
+            }
+            // The row's first and last owned cells are beside a ghost (in 1D the slab is one cell).
+            const bool sides = moves && (b.lo[0] == owned_.lo[0] || b.hi[0] == owned_.hi[0]);
+            if (sides) keep(c0);
+            auto one = [&](int i) {
+              const std::int64_t c = c0 + i;
+              const double mass = ms[c];
+              const bool drop = !(mass > kTraceMass) || mass < kNegligibleMassFraction * fm[i];
+              if (drop) adv_.dropCells.push_back(c);
+              if (moves && (drop || edge)) keep(c);
+            };
+            int i = 0;
+            if (!edge)
+              for (; i + 4 <= n; i += 4) {  // four at a time (the lanes) where none is dropped
+                using lanes::v4d, lanes::load;
+                const v4d mass = load(ms + c0 + i);
+                if (lanes::any(~(mass > kTraceMass) | (mass < kNegligibleMassFraction * load(fm + i))))
+                  for (int l = 0; l < 4; ++l) one(i + l);
+              }
+            for (; i < n; ++i) one(i);
+            if (sides) keep(c0 + n - 1);
+          }
+      };
       // The faces of slab s (lo[top] .. hi[top] + 1) in the flux passes' order: with s <= hi[top]
       // those inside it (along x; in 3D x and y row by row), then its low faces in top (the
       // slabs in order give every cell its faces' terms in the order x low, x high, y low, y
@@ -1024,9 +1149,11 @@ void IceSolver::advectFluids() {
       };
       auto row = [&](int d, int j, int k, int ilo, int ihi) { pass2Row(P[d], d, j, k, ilo, ihi); };
       for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
+        lagTo(s + 1, s == owned_.lo[top]);
         fitWindow(r, s, s != owned_.lo[top]);
         scaleWindow(r, s, s != owned_.lo[top]);
         if (s <= owned_.hi[top]) {
+          conserved(r, s);
           auto init = [&](std::int64_t c, double* R) {  // the mass before advection, no outflow yet
             R[kRemMass * rs] = ms[c];
             for (int q = 1; q < kRemSums; ++q) R[q * rs] = 0.0;
@@ -1042,12 +1169,15 @@ void IceSolver::advectFluids() {
         slabFaces(s, row);
         if (s == owned_.lo[top]) continue;
         // Slab s - 1 is complete: the positivity blend of its donors (positivityBlend).
+        const double* eL = lagE;
         auto blend1 = [&](std::int64_t c, const double* R) {
           const double ec = cold && vL[c] > 0 ? m.eos->coldEnergy(1.0 / vL[c]) : 0.0;
           const double b = positivityBlend(R, rs, eL[c] - ec, vL[c]);
           if (b < 1.0) {
             adv_.blends.push_back({c, b});
             ++positivityBlends_;
+            keep(c);  // the blend pass reads the donor's values and its face neighbours'
+            for (int d = 0; d < dim; ++d) keep(c - strides[d]), keep(c + strides[d]);
           }
         };
         // Four donors at once: blend1 only where one of positivityBlend's tests can lower b (the
@@ -1067,7 +1197,14 @@ void IceSolver::advectFluids() {
           for (int l = 0; l < 4; ++l) blend1(c + l, R + l);
         };
         forSlabLanes(s - 1, blend4, blend1);
+        dropCandidates(s - 1);
       }
+      // In increasing cell order as dropCandidates kept them, unless a blend kept its neighbours.
+      if (!adv_.blends.empty())
+        std::sort(adv_.lagKept.begin(), adv_.lagKept.end(), [](const auto& a, const auto& b) { return a.cell < b.cell; });
+      adv_.lagKept.erase(std::unique(adv_.lagKept.begin(), adv_.lagKept.end(),
+                                     [](const auto& a, const auto& b) { return a.cell == b.cell; }),
+                         adv_.lagKept.end());
 
       // At the outgoing faces of the few donors with a blend below 1, the difference between the
       // blended fluxes and those applied above (the same on both sides of the face: conservative).
@@ -1078,8 +1215,11 @@ void IceSolver::advectFluids() {
         for (const AdvectionScratch::Blend& e : adv_.blends) blend.data()[e.cell] = e.b;
         ghosts_->fill(blend);
         const double* bl = blend.data();
-        // Slab by slab as pass 2 (its isentrope fits' window made again): each cell takes its
-        // faces' terms in the order of a sweep per direction.
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        fitOffset = 0;  // the fits below are the face's own (local cells)
+        // Slab by slab as pass 2: each cell takes its faces' terms in the order of a sweep per
+        // direction. The face values from the four cells cL - sd, cL, cR, cR + sd (local 0 .. 3),
+        // those of the donor's reconstruction (D - sd, D, D + sd) gathered, with their fits.
         auto face = [&](int d, int i, int j, int k) {
           const FluxPtrs& Q = P[d];
           const std::int64_t fi = Q.fb.index(i, j, k);
@@ -1092,17 +1232,31 @@ void IceSolver::advectFluids() {
           const int id = d == 0 ? i : (d == 1 ? j : k);
           const bool ownL = id > owned_.lo[d], ownR = id <= owned_.hi[d];
           const double lam = Q.sc[D - scaleOffset];
-          const FaceValue fv(rc, Q.uf[fi], cL, Q.sd, dt, Q.dx);
-          const FaceState f = faceState(fv, cL, cR, Q.u, Q.vL, Q.eL, Q.th, Q.isG, Q.isP);
+          double lu[3][4], le[4], lv[4], lth[4], lg[4] = {nan, nan, nan, nan}, lp[4] = {0, 0, 0, 0};
+          const int lD = D == cL ? 1 : 2;  // the donor's local index
+          for (int n = 0; n < 4; ++n) {
+            const std::int64_t c = cL + (n - 1) * Q.sd;
+            double u[3] = {nan, nan, nan}, e = nan;
+            if (n >= lD - 1 && n <= lD + 1) lagAt(m, c, u, e);
+            for (int q = 0; q < 3; ++q) lu[q][n] = u[q];
+            le[n] = e;
+            lv[n] = Q.vL[c];
+            lth[n] = Q.th[c];
+          }
+          if (Second && entropyBound && singleFluid(lth[1]) && singleFluid(lth[2]))
+            isentropeFits(*m.eos, 2, lv + 1, le + 1, adv_, lg + 1, lp + 1);
+          const double* lup[3] = {lu[0], lu[1], lu[2]};
+          const FaceValue fv(rc, Q.uf[fi], 1, 1, dt, Q.dx);
+          const FaceState f = faceState(fv, 1, 2, lup, lv, le, lth, lg, lp);
           double fl[kNumAcc];
           double ke1 = 0, keB = 0;
           for (int q = 0; q < dim; ++q) {
-            const double ub = Q.u[q][D] + b * (f.u[q] - Q.u[q][D]);
+            const double ub = lu[q][lD] + b * (f.u[q] - lu[q][lD]);
             fl[kMomX + q] = F * (ub - f.u[q]);
             ke1 += f.u[q] * f.u[q];
             keB += ub * ub;
           }
-          const double eb = Q.eL[D] + b * (f.e - Q.eL[D]), vb = Q.vL[D] + b * (f.v - Q.vL[D]);
+          const double eb = le[lD] + b * (f.e - le[lD]), vb = lv[lD] + b * (f.v - lv[lD]);
           fl[kMass] = 0.0;
           fl[kEnergy] = F * ((eb + 0.5 * keB) - (f.e + 0.5 * ke1));
           fl[kVolume] = F * (vb - f.v);
@@ -1115,14 +1269,13 @@ void IceSolver::advectFluids() {
           }
         };
         for (int s = owned_.lo[top]; s <= owned_.hi[top] + 1; ++s) {
-          fitWindow(r, s, s != owned_.lo[top]);
           scaleWindow(r, s, s != owned_.lo[top]);
           slabFaces(s, [&](int d, int j, int k, int ilo, int ihi) {
             for (int i = ilo; i <= ihi; ++i) face(d, i, j, k);
           });
         }
       }
-      convert(r);
+      convert(r, lagAt);
       // The velocity's ghosts as they were before the Lagrangian values' fill above (the state's
       // at the step's equilibrium), as when the Lagrangian values were copies: a coupled run's
       // stable step reads them (the shock viscosity's du) before the next equilibrium fills them.

@@ -136,7 +136,10 @@ double heldShare(const std::vector<MaterialState>& mat, const double* K, int r, 
 }  // namespace
 
 void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x) {
-  const core::Box box = owned.grow(1, dim);
+  computeCellMixesOver(st, owned.grow(1, dim), dim, x);
+}
+
+void computeCellMixesOver(const IceState& st, const core::Box& box, int dim, CellMixes& x) {
   x.box = box;
   const auto n = static_cast<std::size_t>(box.numPts());
   x.rho.resize(n);
@@ -159,6 +162,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
   }
   const Ptr* const ptr = ptrs.data();
   double* const xu[3] = {x.u[0].data(), x.u[1].data(), x.u[2].data()};
+  const double* const pressure = x.pressure ? x.pressure : st.press.data();
   // Stored cell c, o its index in box. NM, DIM > 0: the number of materials and the dimension
   // fixed at compile time (the small loops unroll; the same operations in the same order).
   auto cell = [&]<int NM, int DIM>(std::int64_t c, std::size_t o) {
@@ -176,7 +180,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
       if (t > 0) dn += t / m.sv[c], kap += t * m.ka[c];
     }
     x.rho[o] = dn;
-    if (x.lowMach) x.p[o] = st.press.data()[c];
+    if (x.lowMach) x.p[o] = pressure[c];
     x.z[o] = dn > 0 && kap > 0 && !solid ? std::sqrt(dn / kap) : 0.0;
     for (int d = 0; d < nd; ++d) xu[d][o] = mass > 0 ? mu[d] / mass : 0.0;
   };
@@ -200,7 +204,7 @@ void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellM
       kap = sel(on, kap + t * load(m.ka + c), kap);
     }
     lanes::store(x.rho.data() + o, dn);
-    if (x.lowMach) lanes::store(x.p.data() + o, load(st.press.data() + c));
+    if (x.lowMach) lanes::store(x.p.data() + o, load(pressure + c));
     lanes::store(x.z.data() + o, sel((dn > 0) & (kap > 0) & ~solid, lanes::sqrt(dn / kap), zero));
     for (int d = 0; d < DIM; ++d) lanes::store(xu[d] + o, sel(mass > 0, mu[d] / mass, zero));
   };
@@ -223,9 +227,10 @@ void IceSolver::computeFaceVelocities() {
   // "Shocks": ICE's dt v_r grad p alone vanishes with the local acoustic CFL number, and a slow
   // shock then rings: test 5 +8.4 % at 400 cells, +12.6 % at CFL 0.2).
   const bool riemannOn = riemannFacePressureOn();
-  const CellMixes empty;
-  const CellMixes& mix = riemannOn ? cellMixes() : empty;
-  const std::int64_t mixStrides[3] = {1, mix.box.length(0), std::int64_t(mix.box.length(0)) * mix.box.length(1)};
+  CellMixes& mix = mixes_;  // made a block of slabs at a time (forMixBlocks, below)
+  mix.lowMach = riemannOn && riemannLowMach_;
+  const std::array<std::int64_t, 3> mixStride = cellMixStrides(owned_, dim);
+  const std::int64_t mixStrides[3] = {mixStride[0], mixStride[1], mixStride[2]};
   // Each cell's held share (heldShare) per fluid, once: the faces on both sides read it.
   HeldShares& H = held_;
   if (exchSolids) {
@@ -249,7 +254,10 @@ void IceSolver::computeFaceVelocities() {
     mobility = &semi_.mobility;
   }
   semi_.mobilityFresh = semiImplicit_;
-  for (int d = 0; d < dim; ++d) {
+  const int top = dim - 1;
+  // The faces normal to d with index tlo .. thi in top (each face on its own: the order of the
+  // blocks and directions changes no value).
+  auto direction = [&](int d, int tlo, int thi) {
     const double dx = mesh_.dx(d);
     const double g = gravity_[d];
     const std::int64_t sd = strides[d];
@@ -389,25 +397,34 @@ void IceSolver::computeFaceVelocities() {
       for (int r = 0; r < NM; ++r) lanes::store(ptr[r].uf + fi, x[r]);
     };
     // The faces in forEach's order, by rows (flat indices along each row).
+    core::Box rows = fb;
+    rows.lo[top] = std::max(fb.lo[top], tlo);
+    rows.hi[top] = std::min(fb.hi[top], thi);
     auto sweep = [&]<int NM>() {
-      for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
-        for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
-          const int i0 = fb.lo[0];
+      for (int k = rows.lo[2]; k <= rows.hi[2]; ++k)
+        for (int j = rows.lo[1]; j <= rows.hi[1]; ++j) {
+          const int i0 = rows.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k);
           std::int64_t R = riemannOn ? mix.box.index(i0, j, k) : 0, hR = exchSolids ? H.box.index(i0, j, k) : 0;
           int i = i0;
           if constexpr (NM > 0)
             if (lanesOk)
-              for (; i + 3 <= fb.hi[0]; i += 4, cR += 4, fi += 4, R += 4, hR += 4)
+              for (; i + 3 <= rows.hi[0]; i += 4, cR += 4, fi += 4, R += 4, hR += 4)
                 faceLanes.template operator()<NM>(cR, fi, R);
-          for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
+          for (; i <= rows.hi[0]; ++i, ++cR, ++fi, ++R, ++hR) face.template operator()<NM>(i, j, k, cR, fi, R, hR);
         }
     };
     if (nm == 1) sweep.template operator()<1>();
     else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
-  }
+  };
+  if (riemannOn)
+    forMixBlocks(st_, owned_, dim, mix, owned_.lo[top], owned_.hi[top] + 1, [&](int lo, int hi) {
+      for (int d = 0; d < dim; ++d) direction(d, lo, hi);
+    });
+  else
+    for (int d = 0; d < dim; ++d) direction(d, owned_.lo[top], owned_.hi[top] + 1);
 }
 
 double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double du, double scale) {
@@ -417,13 +434,13 @@ double riemannImpedance(double zL, double rhoL, double zR, double rhoR, double d
 }
 
 double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
-                              std::int64_t* cell, const CellMixes* mixes) {
+                              std::int64_t* cell, CellMixes* mixes) {
   const int dim = mesh.dim();
   const core::Box& sb = st.press.box();
   CellMixes own;
-  if (!mixes) computeCellMixes(st, owned, dim, own);
-  const CellMixes& x = mixes ? *mixes : own;
-  const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
+  CellMixes& x = mixes ? *mixes : own;
+  const std::array<std::int64_t, 3> stride = cellMixStrides(owned, dim);
+  const std::int64_t strides[3] = {stride[0], stride[1], stride[2]};
   double rate = 0;
   // The cell's rate at the four cells c .. c + 3 (the lanes, lanes.h: the same operations); the
   // maximum taken cell by cell in order, as below.
@@ -447,18 +464,20 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
         if (cell) *cell = sb.index(i + l, j, k);
       }
   };
-  // The owned cells in forEach's order, by rows (c: the index in the mixtures' box).
+  // The owned cells in forEach's order, by rows (c: the index in the mixtures' box), those of
+  // `rows` (a block of slabs: forMixBlocks).
+  core::Box rows = owned;
   auto sweep = [&](auto&& f) {
-    for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
-      for (int j = owned.lo[1]; j <= owned.hi[1]; ++j) {
-        std::int64_t c = x.box.index(owned.lo[0], j, k);
-        int i = owned.lo[0];
+    for (int k = rows.lo[2]; k <= rows.hi[2]; ++k)
+      for (int j = rows.lo[1]; j <= rows.hi[1]; ++j) {
+        std::int64_t c = x.box.index(rows.lo[0], j, k);
+        int i = rows.lo[0];
         if (dim > 0 && !x.lowMach)  // riemann_low_mach: the scalar path (lowMachScale)
-          for (; i + 3 <= owned.hi[0]; i += 4, c += 4) cellLanes(i, j, k, c);
-        for (; i <= owned.hi[0]; ++i, ++c) f(i, j, k, c);
+          for (; i + 3 <= rows.hi[0]; i += 4, c += 4) cellLanes(i, j, k, c);
+        for (; i <= rows.hi[0]; ++i, ++c) f(i, j, k, c);
       }
   };
-  sweep([&](int i, int j, int k, std::int64_t c) {
+  auto one = [&](int i, int j, int k, std::int64_t c) {
     const auto C = static_cast<std::size_t>(c);
     double s = 0;
     for (int d = 0; d < dim; ++d) {
@@ -475,24 +494,32 @@ double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const 
       rate = s;
       if (cell) *cell = sb.index(i, j, k);
     }
+  };
+  const int top = dim - 1;
+  forMixBlocks(st, owned, dim, x, owned.lo[top], owned.hi[top], [&](int lo, int hi) {
+    rows.lo[top] = lo;
+    rows.hi[top] = hi;
+    sweep(one);
   });
   return rate;
 }
 
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1, double q2, bool riemann,
-                          const CellMixes* mixes) {
+                          CellMixes* mixes) {
   const bool q = q1 > 0 || q2 > 0;
   CellMixes own;
-  if (riemann && !mixes) computeCellMixes(st, owned, dim, own);
-  const CellMixes& x = mixes ? *mixes : own;
-  const std::int64_t strides[3] = {1, x.box.length(0), std::int64_t(x.box.length(0)) * x.box.length(1)};
+  CellMixes& x = mixes ? *mixes : own;
+  const std::array<std::int64_t, 3> stride = cellMixStrides(owned, dim);
+  const std::int64_t strides[3] = {stride[0], stride[1], stride[2]};
   const core::Box& sb = st.press.box();
   const std::int64_t cellStrides[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
   std::vector<const double*> mass;
   for (const MaterialState& m : st.mat) mass.push_back(m.mass.data());
   const double* press = st.press.data();
   const int nm = static_cast<int>(mass.size());
-  for (int d = 0; d < dim; ++d) {
+  const int top = dim - 1;
+  // The faces normal to d with index tlo .. thi in top (each face on its own).
+  auto direction = [&](int d, int tlo, int thi) {
     const core::Box fb = owned.faces(d);
     double* pface = st.pressFace[d].data();
     // The face (i, j, k): stored cell cR on its high side, face index fi, cR's index R in the
@@ -541,50 +568,46 @@ void computeFacePressures(IceState& st, const core::Box& owned, int dim, double 
       lanes::store(pface + fi, pf);
     };
     // The faces in forEach's order, by rows (flat indices along each row).
+    core::Box rows = fb;
+    rows.lo[top] = std::max(fb.lo[top], tlo);
+    rows.hi[top] = std::min(fb.hi[top], thi);
     auto sweep = [&]<int NM>() {
-      for (int k = fb.lo[2]; k <= fb.hi[2]; ++k)
-        for (int j = fb.lo[1]; j <= fb.hi[1]; ++j) {
-          const int i0 = fb.lo[0];
+      for (int k = rows.lo[2]; k <= rows.hi[2]; ++k)
+        for (int j = rows.lo[1]; j <= rows.hi[1]; ++j) {
+          const int i0 = rows.lo[0];
           std::int64_t cR = sb.index(i0, j, k), fi = fb.index(i0, j, k), R = riemann ? x.box.index(i0, j, k) : 0;
           int i = i0;
           if constexpr (NM > 0)
             if (!q && !x.lowMach)  // riemann_low_mach: the scalar path (lowMachScale)
-              for (; i + 3 <= fb.hi[0]; i += 4, cR += 4, fi += 4, R += 4) faceLanes.template operator()<NM>(cR, fi, R);
-          for (; i <= fb.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
+              for (; i + 3 <= rows.hi[0]; i += 4, cR += 4, fi += 4, R += 4) faceLanes.template operator()<NM>(cR, fi, R);
+          for (; i <= rows.hi[0]; ++i, ++cR, ++fi, ++R) face.template operator()<NM>(i, j, k, cR, fi, R);
         }
     };
     if (nm == 1) sweep.template operator()<1>();
     else if (nm == 2) sweep.template operator()<2>();
     else if (nm == 3) sweep.template operator()<3>();
     else sweep.template operator()<0>();
-  }
+  };
+  if (riemann)
+    forMixBlocks(st, owned, dim, x, owned.lo[top], owned.hi[top] + 1, [&](int lo, int hi) {
+      for (int d = 0; d < dim; ++d) direction(d, lo, hi);
+    });
+  else
+    for (int d = 0; d < dim; ++d) direction(d, owned.lo[top], owned.hi[top] + 1);
 }
 
 // With external materials the energy correction is off, so the Riemann term's work would not
 // return as heat: coupled runs keep the average (docs/ice.md "Face pressure").
 // The impedances need kappa in the ghost cells: the equilibrium fills them with the other fields'
 // (fillMaterialGhosts) when the Riemann face pressure is on, for this phase and the stable step.
-const CellMixes& IceSolver::cellMixes() const {
-  mixes_.lowMach = riemannLowMach_;
-  // Their arrays serve the advection in turn, over the stored box (advectFluids): reserved at that
-  // size at once, so that neither reallocates them (the freed smaller arrays were holes in the
-  // heap that the larger ones could not reuse: +2 doubles per cell of resident memory).
-  const auto npts = static_cast<std::size_t>(st_.press.box().numPts());
-  auto reserve = [&](std::vector<double>& v) {
-    if (v.capacity() < npts) v.reserve(npts);
-  };
-  reserve(mixes_.rho);
-  reserve(mixes_.z);
-  if (mixes_.lowMach) reserve(mixes_.p);
-  for (int d = 0; d < mesh_.dim(); ++d) reserve(mixes_.u[static_cast<std::size_t>(d)]);
-  if (!mixesValid_) computeCellMixes(st_, owned_, mesh_.dim(), mixes_);
-  mixesValid_ = true;
-  return mixes_;
-}
-
 void IceSolver::computeFacePressure() {
-  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn(),
-                       riemannFacePressureOn() ? &cellMixes() : nullptr);
+  mixes_.lowMach = riemannLowMach_;
+  // lowMachScale's strain reads the step's equilibrium pressure, as in the stable step and the
+  // face velocities (before the increment): kept by computePressureIncrement.
+  if (riemannLowMach_ && lowMachPressure_.size() == static_cast<std::size_t>(st_.press.npts()))
+    mixes_.pressure = lowMachPressure_.data();
+  computeFacePressures(st_, owned_, mesh_.dim(), q1_, q2_, riemannFacePressureOn(), &mixes_);
+  mixes_.pressure = nullptr;
 }
 
 }  // namespace mpmice::ice

@@ -19,7 +19,6 @@ namespace mpmice::ice {
 using core::forEach;
 
 void IceSolver::computeEquilibriumPressure() {
-  mixesValid_ = false;  // theta, specific volume and kappa change here
   semi_.mobilityFresh = false;
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();
@@ -329,6 +328,8 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
 }
 
 void IceSolver::computePressureIncrement() {
+  if (riemannLowMach_)  // the face pressure's lowMachScale reads the equilibrium pressure (ghosts and all)
+    lowMachPressure_.assign(st_.press.data(), st_.press.data() + st_.press.npts());
   if (semiImplicit_) {
     solveSemiImplicit();
   } else {

@@ -241,7 +241,8 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   double rRate = 0, localR = 0;
   std::int64_t rCell = -1;
   if (riemannFacePressureOn()) {
-    localR = riemannDissipationRate(st_, mesh_, owned_, &rCell, &cellMixes());
+    mixes_.lowMach = riemannLowMach_;
+    localR = riemannDissipationRate(st_, mesh_, owned_, &rCell, &mixes_);
     rRate = comm_.max(localR);
   }
   double nu = 0, localNu = 0;
@@ -424,7 +425,6 @@ void IceSolver::setExternalMaterialState(int material, std::span<const double> m
                                          std::span<const double> temperature, std::span<const double> specificVolume) {
   MaterialState& m = st_.mat.at(static_cast<std::size_t>(material));
   if (!m.external) throw std::invalid_argument("ice: material '" + m.name + "' is not external");
-  mixesValid_ = false;
   const std::size_t n = static_cast<std::size_t>(owned_.numPts());
   if (mass.size() != n || temperature.size() != n || specificVolume.size() != n || velocity.size() != 3 * n)
     throw std::invalid_argument("ice: external state of '" + m.name + "' has the wrong size (owned cells " +
@@ -479,7 +479,6 @@ IceSolver::Checkpoint IceSolver::checkpoint() const {
 }
 
 void IceSolver::restore(const Checkpoint& c) {
-  mixesValid_ = false;
   semi_.mobilityFresh = false;
   std::size_t n = 0;
   forCheckpointFields(st_, [&](core::Field& x) { x = c.fields.at(n++); });
@@ -490,7 +489,6 @@ void IceSolver::restore(const Checkpoint& c) {
 void IceSolver::fitFluidsToExternalVolume() {
   if (initialPressure_.npts() == 0)
     throw std::logic_error("ice: fitFluidsToExternalVolume needs a solver built for a coupled start");
-  mixesValid_ = false;
   const double V = mesh_.cellVolume();
   forEach(owned_, [&](int i, int j, int k) {
     // Fluids at the scene's initial pressure of the cell (their micro density from the EOS).

@@ -141,7 +141,6 @@ class IceSolver {
   [[nodiscard]] const core::Field& pressure() const { return st_.press; }
   [[nodiscard]] const IceState& state() const { return st_; }
   [[nodiscard]] IceState& state() {
-    mixesValid_ = false;  // the caller may change what the cached cell mixtures come from
     semi_.mobilityFresh = false;
     return st_;
   }
@@ -304,16 +303,17 @@ class IceSolver {
   std::vector<double> eqRho_, eqE_, eqC2_;
   std::vector<std::int64_t> eqCells_;  // the chunk's stored indices
   AdvectionScratch adv_;
-  // The cells' mixture values of the Riemann face pressure, shared by the stable step, the face
-  // velocities and the face pressure of a step (none of the phases between them changes mass,
-  // velocity, theta, specific volume or kappa); invalid from the equilibrium, the sources, the
-  // advection, a restore and whenever the state is set from outside (cellMixes() computes them
-  // again). Their arrays serve the advection in turn (advectFluids lends them).
+  // The cells' mixture values of the Riemann face pressure over a block of slabs, made by each of
+  // its readers (the stable step, the face velocities, the face pressure) as it sweeps the slabs
+  // (forMixBlocks in phase_units.h): a few operations per cell and reader against four arrays of
+  // the whole box.
   mutable CellMixes mixes_;
+  // ice.face_pressure: riemann_low_mach: the cell pressure before the pressure increment (stored
+  // box), which the face pressure's mixtures read (lowMachScale), as the stable step's and the
+  // face velocities' do; empty otherwise.
+  std::vector<double> lowMachPressure_;
   // The semi-implicit stable step's mixture impedance per cell (owned box grown by one).
   mutable std::vector<double> impedanceScratch_;
-  mutable bool mixesValid_ = false;
-  [[nodiscard]] const CellMixes& cellMixes() const;
 };
 
 }  // namespace mpmice::ice

@@ -64,7 +64,6 @@ void IceSolver::saveCheckpoint(core::CheckpointData& data, const std::string& pr
 }
 
 void IceSolver::loadCheckpoint(const core::CheckpointData& data, const std::string& prefix) {
-  mixesValid_ = false;
   semi_.mobilityFresh = false;
   forEveryField(st_, [&](const std::string& name, core::Field& f) {
     const std::string key = cat(cat(prefix, "."), name);

@@ -16,7 +16,6 @@
 namespace mpmice::ice {
 
 void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
-  mixesValid_ = false;
   const int dim = mesh_.dim();
   owned_ = decomp_.cellBox(comm_.rank());
   const core::Box stored = decomp_.storedBox(comm_.rank(), core::Centering::Cell, kGhost);

@@ -46,8 +46,8 @@ enum : int { kMass = 0, kMomX, kMomY, kMomZ, kEnergy, kVolume, kEint, kCount };
 /// Phase 12: per material the mass flux through each face (the other fluxes are that times a
 /// face value, computed again where they are applied). The fluids are advected one after the
 /// other (their fluxes are independent once the mass fluxes are known), so the rest is shared
-/// by them: the conserved amounts being accumulated (m u, m (e + |u|^2 / 2), m e; the mass and
-/// m v in the state's own fields), the donors' positivity scale, the isentrope fits. The
+/// by them: m e being accumulated (the mass, m u, m (e + |u|^2 / 2) and m v in the state's own
+/// fields), the Lagrangian values those overwrite, the donors' positivity scale, the isentrope fits. The
 /// positivity blend's per-donor sums live for two slabs of cells only (rows in 2D, planes in
 /// 3D: pass 2 sweeps them in order and a slab's sums are complete once the faces above it are
 /// done), its factors only where they are below 1; so do the outflow scale (kept where it is not
@@ -69,11 +69,27 @@ struct AdvectionScratch {
   /// The outflow scale of the fluid being advected over two slabs of stored cells (s - 1 and s,
   /// as the isentrope fits below), put back from `capped` as the flux passes reach slab s.
   std::vector<double> scaleWindow;
-  /// Per stored cell, of the fluid being advected: m u (the mesh's dimension of components),
-  /// m (e + |u|^2 / 2), m e. These are the cell mixtures' arrays, lent to the advection
-  /// (advectFluids).
-  std::array<std::vector<double>, 3> momentum;
-  std::vector<double> energy, eint;
+  /// Per stored cell, of the fluid being advected: m e (the fallback of the conversion; m u and
+  /// m (e + |u|^2 / 2) are accumulated in its velocity and energy, advection_phase.cpp).
+  std::vector<double> eint;
+  /// The Lagrangian velocity (the mesh's dimension of components) and internal energy of the
+  /// fluid being advected over a window of consecutive stored slabs, one array after the other:
+  /// the face values' sources, copied as the flux passes reach them, before the slab's velocity
+  /// and energy become its conserved amounts (advection_phase.cpp, lagWindow).
+  std::vector<double> lagWindow;
+  /// The Lagrangian values of the owned cells read after their slab has left the window, in
+  /// increasing cell order once pass 2 is done: the positivity blend's donors and their face
+  /// neighbours, the owned cells beside a ghost (a ghost donor's blend is known after pass 2),
+  /// and the cells whose conversion drops them as a trace (they keep their Lagrangian values).
+  struct LagCell {
+    std::int64_t cell;
+    double u[3];
+    double e;
+  };
+  std::vector<LagCell> lagKept;
+  /// The owned cells of the fluid being advected that its conversion drops as traces, in
+  /// increasing order.
+  std::vector<std::int64_t> dropCells;
   /// Over the owned cells of two consecutive slabs, kRemSums arrays one after the other (a row's
   /// cells consecutive in each, for the lanes): the donor's mass left after its outflows and the
   /// outflows' sums the positivity blend needs (advection_phase.cpp).

@@ -27,7 +27,6 @@ namespace mpmice::ice {
 using core::forEach;
 
 void IceSolver::computeSourcesAndLagrangian() {
-  mixesValid_ = false;  // the cached cell mixtures serve the stable step to the face pressure only
   const int dim = mesh_.dim();
   const int nm = numMaterials();
   const double V = mesh_.cellVolume();

@@ -6,6 +6,7 @@
 /// = low face of cell i); cell fields over the stored box, read at the owned cells and their face
 /// neighbours (their ghosts must be filled).
 #include <array>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -15,8 +16,9 @@
 namespace mpmice::ice {
 
 /// Mixture density rho, acoustic impedance z = rho c (Wood) and mass-averaged velocity u_d of
-/// every cell of `box` (the owned cells and one layer around them): what the Riemann face
-/// pressure and its rate in the stable step read, computed once per cell (not per face side).
+/// every cell of `box` (the owned cells and one layer around them, or a block of slabs of it:
+/// forMixBlocks): what the Riemann face pressure and its rate in the stable step read, computed
+/// once per cell (not per face side).
 /// A cell holding an external material (a solid, mass > 0) gets z = 0: the Riemann terms act at
 /// faces between fluid cells only (a solid's surface load stays ICE's average face pressure).
 struct CellMixes {
@@ -25,10 +27,44 @@ struct CellMixes {
   std::array<std::vector<double>, 3> u;
   /// Scale the Riemann terms by the faces' Mach number (lowMachScale in face_phase.cpp).
   bool lowMach = false;
+  /// With lowMach: the cell pressures p is made from (stored-box indexed); null: the state's.
+  const double* pressure = nullptr;
 };
 /// Fills x for the owned box grown by one layer (ghosts of mass, velocity, theta, specific
 /// volume and kappa filled); reuses x's storage.
 void computeCellMixes(const IceState& st, const core::Box& owned, int dim, CellMixes& x);
+/// The same over `box` (inside the owned box grown by one): x.box = box.
+void computeCellMixesOver(const IceState& st, const core::Box& box, int dim, CellMixes& x);
+/// About how many cells the mixtures cover at a time (forMixBlocks).
+inline constexpr std::int64_t kMixWindowCells = 32768;
+/// The readers of the mixtures a block of slabs at a time (slabs: the cells or faces with one
+/// index in the last direction, top = dim - 1; rows in 2D, planes in 3D), so that none keeps them
+/// for the whole box: for each block lo .. hi of the slabs first .. last (in order), x is made
+/// over the slabs lo - 1 .. hi + 1 of the owned box grown by one (those there are; a cell's
+/// values are its own: the same as over the whole box), then f(lo, hi). A cell's faces and
+/// neighbours in top lie within one slab of it. In 1D one block.
+template <class F>
+void forMixBlocks(const IceState& st, const core::Box& owned, int dim, CellMixes& x, int first, int last, F&& f) {
+  const core::Box grown = owned.grow(1, dim);
+  const int top = dim - 1;
+  std::int64_t slab = 1;
+  for (int q = 0; q < top; ++q) slab *= grown.length(q);
+  const int n = dim == 1 ? last - first + 1 : static_cast<int>(std::max<std::int64_t>(1, kMixWindowCells / slab));
+  for (int lo = first; lo <= last; lo += n) {
+    const int hi = std::min(last, lo + n - 1);
+    core::Box b = grown;
+    b.lo[top] = std::max(grown.lo[top], lo - 1);
+    b.hi[top] = std::min(grown.hi[top], hi + 1);
+    computeCellMixesOver(st, b, dim, x);
+    f(lo, hi);
+  }
+}
+/// The strides of a mixtures' box along each direction (the same for every block of forMixBlocks:
+/// the box's lengths below top are the grown box's).
+inline std::array<std::int64_t, 3> cellMixStrides(const core::Box& owned, int dim) {
+  const core::Box g = owned.grow(1, dim);
+  return {1, g.length(0), std::int64_t(g.length(0)) * g.length(1)};
+}
 
 /// Face volume fluxes U_f = sum_r theta_r u_f,r (theta from the upwind cell; st.volFlux).
 void computeVolumeFluxes(IceState& st, const core::Mesh& mesh, const core::Box& owned);
@@ -81,10 +117,11 @@ void explicitPressureIncrement(IceState& st, const core::Mesh& mesh, const core:
 /// rho its mixture density (the term is a diffusion of velocity with nu = Z dx / rho at faces in
 /// compression; forward Euler is stable for dt <= 1 / rate). `cell` gets the stored-box index of
 /// the cell that sets it. Needs mass, velocity, theta, specific volume and kappa in the ghosts.
-/// `mixes`: computeCellMixes of the current state if the caller keeps it (else computed here).
+/// `mixes`: the storage of the mixtures (forMixBlocks) if the caller keeps it (else local); x.lowMach
+/// as the caller sets it.
 [[nodiscard]] double riemannDissipationRate(const IceState& st, const core::Mesh& mesh, const core::Box& owned,
-                                            std::int64_t* cell, const CellMixes* mixes = nullptr);
+                                            std::int64_t* cell, CellMixes* mixes = nullptr);
 void computeFacePressures(IceState& st, const core::Box& owned, int dim, double q1 = 0, double q2 = 0,
-                          bool riemann = false, const CellMixes* mixes = nullptr);
+                          bool riemann = false, CellMixes* mixes = nullptr);
 
 }  // namespace mpmice::ice
