@@ -239,10 +239,11 @@ class MpmSolver {
   void withStencils(F&& f);
   void migrateAndSort(bool forceSort);
   void applyBC(core::Field& v) const { bcs_.apply(v); }
-  /// Adds each particle's stress work of this step, as the grid update realised it, to its work
-  /// (end of updateGrid).
+  /// Adds each particle's stress work of this step, as the grid update and the coupling's
+  /// increments realised it, to its work (start of gridToParticles).
   void addStressWork();
-  /// sum_i dt f_i . (v_i + v_L,i) / 2 over the nodes that move (the grid's forces' work, updateGrid).
+  /// sum_i dt f_i . (v_i + v_L,i) / 2 over the nodes that move, at the velocity v_L now (the grid's
+  /// forces' work; updateGrid sums the same at its own v_L in its node loop).
   [[nodiscard]] double forceWork() const;
   /// This rank's share of sum_nodes 1/2 m |v|^2 (each mesh node counted once over all ranks).
   [[nodiscard]] double nodeKinetic(const core::Field& v) const;
@@ -297,7 +298,7 @@ class MpmSolver {
   std::string removalReport_;
   bool gridStressWork_ = false;     // mpm.stress_work: grid (addStressWork) or material (the models)
   std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
-  double forceWorkUpdate_ = 0;       // gridStressWork_: forceWork() at the grid update (before increments)
+  double forceWorkUpdate_ = 0;       // the forces' work at the grid update (before the coupling's increments)
   std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
