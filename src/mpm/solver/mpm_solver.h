@@ -165,10 +165,17 @@ class MpmSolver {
     }
   }
   /// Makes mpm.stress_work "auto" mean "grid" (the volume coupling's solid side calls it before
-  /// the first step).
+  /// the first step) where the particles deform with the nodes' velocity the grid count takes,
+  /// v_L (USL, USF's forces). MUSL deforms them with the velocity remapped from the particles, so
+  /// the grid count there would also charge the stored work with what the remap filters out of
+  /// the nodes (the particle-grid transfer's loss): "auto" stays "material" (docs/mpm.md "Stress
+  /// work").
   void useGridStressWorkByDefault() {
-    if (scene_.mpm.stress_work == "auto") gridStressWork_ = true;
+    if (scene_.mpm.stress_work == "auto" && scheme_->kind != UpdateScheme::MUSL) gridStressWork_ = true;
   }
+  /// Whether the particles' stress work is the grid's count (mpm.stress_work grid, or auto in a
+  /// volume-coupled run with USL / USF) rather than the models' stress power.
+  [[nodiscard]] bool gridStressWork() const { return gridStressWork_; }
 
   // ---- checkpoints (implicit coupling repeats a step from the state before it) ----------------
   /// This rank's sums of Energies::transfer, integration, damping, and the step's partial sums.
