@@ -26,8 +26,10 @@ is the 3D cell's), a coarser mesh and a faster plate (--mesh, --rate: cost), qua
 mpm_solver, filled ones through mpmice with the silicone filler (FILLER below) in the pores and
 the buffer gas beside the specimen (--filler pores; --filler surround: the liquid beside it too,
 below the plate, whose squeeze film between plate and floor sets the filled stress by the room's
-width), at each --viscosities value. Writes lattice_filled_stress_strain.csv,
-lattice_filled_summary.csv and lattice_filled_stress_strain.png.
+width), at each --viscosities value, for each --per-edge number of cells per edge (default 2, the
+shipped scenes; n > 2: the size study's quarter of n/2 x n/2 cells with a window in every wall
+across x, one per row; stress and strain over the quarter's width n/2 x a). Writes
+lattice_filled_stress_strain.csv, lattice_filled_summary.csv and lattice_filled_stress_strain.png.
 
     scripts/python benchmarks/lattice/lattice_compression.py --study filled --build build --out output/lattice_filled
 
@@ -140,7 +142,8 @@ def curve(directory, name):
 def mid_plane_stress(directory, name, a, h):
     """The nominal stress across the specimen's mid-plane (the y = 0 mirror plane) per output:
     -sigma_yy of the lattice's particles in the layer next to it (centres below h/2, 2 per cell),
-    each over its width V_p / (h/2), summed and divided by a. The bottom half wall spans the whole
+    each over its width V_p / (h/2), summed and divided by a (the quarter's width: n/2 x the cell
+    edge for n cells per edge). The bottom half wall spans the whole
     cell there, so this is all the load the specimen carries, the pores' liquid pressure
     included, and none of what the liquid outside it or the buffer above the plate exert on the
     plate. On the empty lattices it matches the plate force within 8 % (4-12 %) and 3 % (20-40 %)."""
@@ -214,36 +217,47 @@ class SceneDumper(yaml.SafeDumper):
 
 
 def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, room=3.0e-3, filler="surround",
-               beside_rho=BESIDE_RHO):
+               beside_rho=BESIDE_RHO, n=2):
     """The shipped scene as the open-cell variant: a window in the outer half wall, mesh h, plate at
     rate x a, to 70 % strain, `room` [m] of mesh beside the specimen, MPM's shape function `shape`
     (None: the shipped scene's); filled with the silicone at `viscosity` [Pa s] unless None, in the
     pores and beside the specimen below the plate (filler "surround") or in the pores only, the
-    buffer gas beside the specimen (filler "pores", at density beside_rho)."""
+    buffer gas beside the specimen (filler "pores", at density beside_rho). n > 2 cells per edge:
+    the specimen of size_scene (a quarter of n/2 x n/2 cells, the plate at rate x n/2 a) with a
+    window in every wall across x (the interior walls' full thickness, the outer half wall), one per
+    row of cells, so that each row's pores open onto the next and the last onto the free face."""
     if filler not in ("surround", "pores"):
         raise ValueError(f"open_scene: filler '{filler}' (expected 'surround' or 'pores')")
-    s = yaml.safe_load(open(os.path.join(ROOT, config)))
+    if n < 2 or n % 2:
+        raise ValueError(f"open_scene: {n} cells per edge (expected an even number of at least 2)")
+    k = n // 2
+    side = k * a                                              # the quarter's width and height
+    s = yaml.safe_load(open(os.path.join(ROOT, config))) if n == 2 else size_scene(config, a, n)
     if shape is not None:
         s["mpm"]["shape_function"] = shape
-    name = s["scene"] + ("_empty" if viscosity is None else f"_filled_mu{viscosity:g}")
+    base = yaml.safe_load(open(os.path.join(ROOT, config)))["scene"] + ("" if n == 2 else f"_n{n}")
+    name = base + ("_empty" if viscosity is None else f"_filled_mu{viscosity:g}")
     s["scene"] = name
-    s["description"] = f"Open-cell lattice a = {a * 1e3:.1f} mm, " + \
+    s["description"] = f"Open-cell lattice a = {a * 1e3:.1f} mm" + ("" if n == 2 else f", {n} cells per edge") + ", " + \
         ("empty" if viscosity is None else f"filled with silicone of {viscosity:g} Pa s") + f", {rate:g} 1/s"
     s["mesh"]["spacing"] = [h, h]
     # room beside the specimen (it spreads sideways as it collapses: 1.5 mm was left at 61 % strain,
     # and the filled ones' strut on the mirror plane reached 3 mm out at 47-67 %); whole cells
-    s["mesh"]["upper"] = [h * math.ceil(u / h - 1e-9) for u in (a + room, s["mesh"]["upper"][1])]
+    s["mesh"]["upper"] = [h * math.ceil(u / h - 1e-9) for u in (side + room, s["mesh"]["upper"][1])]
     s["time"]["end"] = 0.7 / rate
     s["output"]["interval"] = 0.005 / rate
     s["output"]["directory"] = name
     lattice = next(g for g in s["geometry"] if g["name"] == "lattice")
     plate = next(g for g in s["geometry"] if g["name"] == "plate")
-    plate["velocity"] = [0.0, -rate * a]
+    plate["velocity"] = [0.0, -rate * side]
     plate["shape"]["hi"][0] = s["mesh"]["upper"][0]               # the plate spans the mesh's width
     pore_lo = lattice["shape"]["shapes"][1]["lo"][0]          # t/2: the half wall's thickness
     window = math.pi * PORE_D ** 2 / (4 * a)                  # the 3D face's open fraction x a
-    lattice["shape"]["shapes"].append({"type": "box", "lo": [a - pore_lo - 0.5 * h, 0.5 * (a - window)],
-                                       "hi": [a + 0.5 * h, 0.5 * (a + window)]})
+    for i in range(1, k + 1):                                 # the walls at x = i a; the last the outer half wall
+        x_hi = i * a + (0.5 * h if i == k else pore_lo + 0.5 * h)
+        for j in range(k):
+            lattice["shape"]["shapes"].append({"type": "box", "lo": [i * a - pore_lo - 0.5 * h, (j + 0.5) * a - 0.5 * window],
+                                               "hi": [x_hi, (j + 0.5) * a + 0.5 * window]})
     if viscosity is None:
         return s
     s["materials"].insert(0, {"name": "silicone", "kind": "fluid", "specific_heat": FILLER_CV, "viscosity": viscosity,
@@ -260,9 +274,9 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     bottom = plate["shape"]["lo"][1]
     s["materials"].insert(1, {"name": "buffer", "kind": "fluid", "eos": {"type": "ideal_gas", "gamma": 1.4},
                               "specific_heat": P_AMBIENT / (0.4 * FILLER_RHO * 300.0)})
-    edge = hi[0] if filler == "surround" else a   # the liquid's extent in x below the plate
+    edge = hi[0] if filler == "surround" else side   # the liquid's extent in x below the plate
     beside = [] if filler == "surround" else [
-        {"name": "beside", "shape": {"type": "box", "lo": [a, lo[1]], "hi": [hi[0], bottom]}, "material": "buffer",
+        {"name": "beside", "shape": {"type": "box", "lo": [side, lo[1]], "hi": [hi[0], bottom]}, "material": "buffer",
          "density": beside_rho, "pressure": P_AMBIENT}]
     s["geometry"][0:0] = [
         {"name": "filler", "shape": {"type": "box", "lo": lo, "hi": [edge, bottom]}, "material": "silicone",
@@ -333,32 +347,35 @@ def filled_study(args):
     build = os.path.abspath(args.build)
     viscosities = [float(v) for v in args.viscosities.split(",")]
     cases, commands = [], []
-    for config, a, rho in SCENES:
-        for mu in [None] + viscosities:
-            s = open_scene(config, a, args.mesh, args.rate, mu, args.filled_cfl, args.shape, args.room, args.filler,
-                           args.beside_density)
-            path = os.path.join(out, s["scene"] + ".yaml")
-            yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
-            exe = os.path.join(build, "mpm_solver", "mpm_solver") if mu is None else os.path.join(build, "coupler", "mpmice")
-            log = os.path.join(out, s["scene"] + ".log")
-            cases.append((s["scene"], a, rho, mu, os.path.join(out, s["output"]["directory"]), log))
-            if not args.only or s["scene"] in args.only.split(","):
-                commands.append(([exe, path], out, log))
+    for n in per_edge(args.per_edge or "2"):
+        for config, a, rho in SCENES:
+            for mu in [None] + viscosities:
+                s = open_scene(config, a, args.mesh, args.rate, mu, args.filled_cfl, args.shape, args.room, args.filler,
+                               args.beside_density, n)
+                path = os.path.join(out, s["scene"] + ".yaml")
+                yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
+                exe = os.path.join(build, "mpm_solver", "mpm_solver") if mu is None else \
+                    os.path.join(build, "coupler", "mpmice")
+                log = os.path.join(out, s["scene"] + ".log")
+                cases.append((s["scene"], a, rho, mu, n, os.path.join(out, s["output"]["directory"]), log))
+                if not args.only or s["scene"] in args.only.split(","):
+                    commands.append(([exe, path], out, log))
     if not args.skip_run:
         run_all(args.jobs, commands)
     rows, summary = [], []
-    for name, a, rho, mu, directory, log in cases:
+    for name, a, rho, mu, n, directory, log in cases:
         if not glob.glob(os.path.join(directory, "*.h5")):
             print(f"{name}: no outputs in {directory}, left out")
             continue
+        side = n // 2 * a                                          # the quarter's width and height
         travel, force, vol0 = curve(directory, name)
-        mid = mid_plane_stress(directory, name, a, args.mesh)
-        strain, stress = travel / a, 0.5 * (mid[1:] + mid[:-1])    # over each output interval
-        plate_plateau = band_mean(strain, force / a, 0.2, 0.4)
+        mid = mid_plane_stress(directory, name, side, args.mesh)
+        strain, stress = travel / side, 0.5 * (mid[1:] + mid[:-1])    # over each output interval
+        plate_plateau = band_mean(strain, force / side, 0.2, 0.4)
         plateau, e_d, w_d = summarize(strain, stress, smooth=kFilledSmoothing)
         steps, wall, rate, particles = parse_log(open(log).read())
-        rows += [(name, a, mu, e, st, fp / a) for e, st, fp in zip(strain, stress, force)]
-        summary.append({"scene": name, "a_mm": a * 1e3, "rho_rel_particles": vol0 / (a * a),
+        rows += [(name, a, mu, e, st, fp / side) for e, st, fp in zip(strain, stress, force)]
+        summary.append({"scene": name, "a_mm": a * 1e3, "cells_per_edge": n, "rho_rel_particles": vol0 / (side * side),
                         "viscosity_Pa_s": 0.0 if mu is None else mu, "filled": int(mu is not None),
                         "first_yield_MPa": band_mean(strain, stress, 0.04, 0.12) / 1e6, "plateau_MPa": plateau / 1e6,
                         "densification_strain": e_d, "absorbed_MJ_per_m3": w_d / 1e6,
@@ -366,9 +383,9 @@ def filled_study(args):
                                                                        np.concatenate(([0.0], strain[strain <= 0.5])))) / 1e6,
                         "plate_force_plateau_MPa": plate_plateau / 1e6, "end_strain": float(strain[-1]),
                         "particles": particles, "steps": steps, "wall_s": wall})
-    empty = {r["a_mm"]: r for r in summary if not r["filled"]}
+    empty = {(r["a_mm"], r["cells_per_edge"]): r for r in summary if not r["filled"]}
     for r in summary:  # NaN where the empty run of the same cell is not in the output (--only)
-        e = empty.get(r["a_mm"])
+        e = empty.get((r["a_mm"], r["cells_per_edge"]))
         r["plateau_over_empty"] = r["plateau_MPa"] / e["plateau_MPa"] if e else float("nan")
         r["absorbed_50_over_empty"] = (r["absorbed_to_50pct_MJ_per_m3"] / e["absorbed_to_50pct_MJ_per_m3"]
                                        if e else float("nan"))
@@ -386,7 +403,8 @@ def filled_study(args):
     dashes = {0.0: 1, viscosities[0]: 2}
     plot_curves(os.path.join(out, "lattice_filled_stress_strain"), summary,
                 lambda r: dashes.get(r["viscosity_Pa_s"], 3),
-                lambda r: "empty" if not r["filled"] else f"filled {r['viscosity_Pa_s']:g} Pa s",
+                lambda r: ("empty" if not r["filled"] else f"filled {r['viscosity_Pa_s']:g} Pa s") +
+                ("" if r["cells_per_edge"] == 2 else f", {r['cells_per_edge']} per edge"),
                 "nominal stress across the mid-plane [MPa]",
                 f"open-cell lattices, {args.rate:g} 1/s, mesh {args.mesh * 1e3:g} mm, {args.shape}")
 
@@ -413,15 +431,27 @@ def size_scene(config, a, n):
     return s
 
 
+def per_edge(text):
+    """--per-edge's list of cells per edge, each an even number of at least 2."""
+    out = []
+    for v in text.split(","):
+        try:
+            n = int(v)
+        except ValueError:
+            sys.exit(f"--per-edge: '{v}' is not a number of cells (expected even numbers >= 2, comma-separated)")
+        if n < 2 or n % 2:
+            sys.exit(f"--per-edge: {n} is not an even number of cells of at least 2")
+        out.append(n)
+    return out
+
+
 def size_study(args):
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     exe = os.path.join(os.path.abspath(args.build), "mpm_solver", "mpm_solver")
     cases, commands = [], []
     for config, a, rho in SCENES:
-        for n in [int(v) for v in args.per_edge.split(",")]:
-            if n < 2 or n % 2:
-                sys.exit(f"--per-edge: {n} is not an even number of cells of at least 2")
+        for n in per_edge(args.per_edge or "2,4,8"):
             s = size_scene(config, a, n)
             path = os.path.join(out, s["scene"] + ".yaml")
             yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
@@ -598,7 +628,8 @@ def main():
     ap.add_argument("--end-strain", type=float, default=0.7, help="3d study: nominal strain at the end")
     ap.add_argument("--compare2d", default=os.path.join(ROOT, "docs", "lattice_summary.csv"),
                     help="3d study: the 2D summary to compare with")
-    ap.add_argument("--per-edge", default="2,4,8", help="size study: cells per edge of the specimen (even)")
+    ap.add_argument("--per-edge", default=None,
+                    help="size and filled studies: cells per edge of the specimen (even; size: default 2,4,8, filled: 2)")
     args = ap.parse_args()
     if args.study == "size":
         return size_study(args)
