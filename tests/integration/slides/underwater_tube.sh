@@ -11,8 +11,10 @@
 #   the cell's energy correction, which charged the cell's heat capacities for the PVC's compression
 #   (the solid's own volume change, booked as work the fluids did, now comes from MPM: docs/coupling.md
 #   "The solid's own volume change").
-# - 5 mm for 110 us: with `mpm.stress_work: grid` it stopped at 107 us on MPM's stored-work check over
-#   the PVC fragments flying through the products (the scene's header: why it counts `material`).
+# - 5 mm for 110 us: with the grid count of the stress work taken before the momentum exchange's
+#   increments (before main 49212fa) it stopped at 107 us on MPM's stored-work check over the PVC
+#   fragments flying through the products; the scene counted `material` until 6 Dec 2026 and now
+#   counts the coupled default (`auto` = grid; the scene's header).
 # Each run must complete: the health checks stop a run with a non-zero status on any non-physical state.
 #   underwater_tube.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
