@@ -235,8 +235,7 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     s = yaml.safe_load(open(os.path.join(ROOT, config))) if n == 2 else size_scene(config, a, n)
     if shape is not None:
         s["mpm"]["shape_function"] = shape
-    base = yaml.safe_load(open(os.path.join(ROOT, config)))["scene"] + ("" if n == 2 else f"_n{n}")
-    name = base + ("_empty" if viscosity is None else f"_filled_mu{viscosity:g}")
+    name = s["scene"] + ("_empty" if viscosity is None else f"_filled_mu{viscosity:g}")   # size_scene's has _n<n>
     s["scene"] = name
     s["description"] = f"Open-cell lattice a = {a * 1e3:.1f} mm" + ("" if n == 2 else f", {n} cells per edge") + ", " + \
         ("empty" if viscosity is None else f"filled with silicone of {viscosity:g} Pa s") + f", {rate:g} 1/s"

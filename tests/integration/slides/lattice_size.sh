@@ -41,7 +41,7 @@ def inside(shape, x, y):
 
 
 hm, rate = 1.5e-4, 2000.0
-window = 3.14159265358979 * L.PORE_D ** 2 / (4 * a)
+window = math.pi * L.PORE_D ** 2 / (4 * a)
 for n in (2, 4):
     k = n // 2
     s = L.open_scene(config, a, hm, rate, 100.0, room=9e-3, filler="pores", n=n)
