@@ -157,6 +157,75 @@ def mid_plane_stress(directory, name, a, h):
         out.append(float(np.sum(-syy[layer] * vol[layer] / (0.5 * h))) / a)
     return np.array(out)
 
+def pores_and_outer_wall(directory, name, scene, side):
+    """Per output of an open-cell scene (open_scene; the filled study): the nominal strain (plate
+    travel / side), the pores' liquid pressure above the gas or liquid beside the specimen [Pa] (NaN
+    when empty) and the outer wall's outward displacement below its first window [m].
+    Pores: the cells inside the specimen's footprint short of its outer wall (x < side - t/2) below
+    the plate that are at least 90 % liquid; beside: the cells more than 1 mm beyond the specimen's
+    side, below the plate, without solid. The outer wall's segment: the polymer particles that start
+    in the outer half wall (thickness t/2) between the bottom half wall and the first row's window,
+    tracked by id; its median x displacement. Beside it, outer_wall_collapse(): the pressure at which
+    that segment, a cantilever from the specimen's corner, collapses plastically."""
+    wall, window_lo = outer_wall(scene, side)
+    names = [m["name"] for m in scene["materials"]]
+    polymer, plate = names.index("polymer"), names.index("plate")
+    files = sorted(glob.glob(os.path.join(directory, f"{name}_[0-9][0-9][0-9][0-9][0-9][0-9].h5")))
+    strain, excess, out = [], [], []
+    x0 = None
+    for f in files:
+        with h5py.File(f, "r") as h:
+            ids, pos, mat = h["particles/id"][:], h["particles/position"][:], h["particles/material"][:]
+            plate_y = float(np.min(pos[mat == plate, 1]))
+            if x0 is None:
+                y00 = plate_y
+                seg = (mat == polymer) & (pos[:, 0] > side - wall) & (pos[:, 1] > wall) & (pos[:, 1] < window_lo)
+                x0 = dict(zip(ids[seg], pos[seg, 0]))
+            strain.append((y00 - plate_y) / side)
+            moved = [pos[i, 0] - x0[k] for i, k in enumerate(ids) if k in x0]
+            out.append(float(np.median(moved)) if moved else float("nan"))
+            e = float("nan")
+            if "grid/cell/silicone_volume_fraction" in h:
+                p = h["grid/cell/pressure"][0]
+                liquid = h["grid/cell/silicone_volume_fraction"][0]
+                solid = h["grid/cell/polymer_volume_fraction"][0] + h["grid/cell/plate_volume_fraction"][0]
+                dx = scene["mesh"]["spacing"]
+                x = (np.arange(p.shape[1]) + 0.5) * dx[0]
+                y = (np.arange(p.shape[0]) + 0.5) * dx[1]
+                X, Y = np.meshgrid(x, y)
+                pores = (liquid > 0.9) & (X < side - wall) & (Y < plate_y)
+                beside = (solid == 0) & (X > side + 1.0e-3) & (Y < plate_y)
+                if pores.any() and beside.any():
+                    e = float(np.mean(p[pores]) - np.mean(p[beside]))
+            excess.append(e)
+    return np.array(strain), np.array(excess), np.array(out)
+
+
+def outer_wall_collapse(scene, side):
+    """The pores' overpressure [Pa] at which the outer half wall's segment below the first window
+    (thickness t/2, length L from the bottom half wall to the window) collapses as a cantilever
+    clamped at the specimen's corner: 2 M_p / L^2 with M_p = sigma_y (t/2)^2 / 4 (static yield, per
+    unit depth; the rate's Cowper-Symonds factor at 2000 1/s adds 14 %)."""
+    wall, window_lo = outer_wall(scene, side)
+    return 2.0 * SIGMA_Y * wall ** 2 / 4.0 / (window_lo - wall) ** 2
+
+
+def outer_wall(scene, side):
+    """The outer half wall's thickness t/2 and the bottom of its first window (open_scene's lattice:
+    the specimen's box, the pores, then the windows; the outer wall's reach beyond x = side)."""
+    shapes = next(g for g in scene["geometry"] if g["name"] == "lattice")["shape"]["shapes"]
+    windows = [b for b in shapes[1:] if b["hi"][0] > side]
+    return shapes[1]["lo"][0], min(b["lo"][1] for b in windows)
+
+
+def at_strain(strain, values, e):
+    """values at nominal strain e (linear between outputs; NaN beyond the run)."""
+    ok = np.isfinite(values)
+    if not ok.any() or e > strain[ok][-1]:
+        return float("nan")
+    return float(np.interp(e, strain[ok], values[ok]))
+
+
 def band_mean(strain, stress, lo, hi):
     sel = (strain >= lo) & (strain <= hi)
     return float(np.mean(stress[sel])) if np.any(sel) else float("nan")
@@ -372,7 +441,11 @@ def filled_study(args):
         strain, stress = travel / side, 0.5 * (mid[1:] + mid[:-1])    # over each output interval
         plate_plateau = band_mean(strain, force / side, 0.2, 0.4)
         plateau, e_d, w_d = summarize(strain, stress, smooth=kFilledSmoothing)
+        if strain[-1] < 0.4:  # a run that stopped before the plateau's band ends has no plateau
+            plateau = plate_plateau = float("nan")
         steps, wall, rate, particles = parse_log(open(log).read())
+        scene = yaml.safe_load(open(os.path.join(out, name + ".yaml")))
+        e_pw, excess, wall_out = pores_and_outer_wall(directory, name, scene, side)
         rows += [(name, a, mu, e, st, fp / side) for e, st, fp in zip(strain, stress, force)]
         summary.append({"scene": name, "a_mm": a * 1e3, "cells_per_edge": n, "rho_rel_particles": vol0 / (side * side),
                         "viscosity_Pa_s": 0.0 if mu is None else mu, "filled": int(mu is not None),
@@ -381,6 +454,10 @@ def filled_study(args):
                         "absorbed_to_50pct_MJ_per_m3": float(np.trapz(np.concatenate(([0.0], stress[strain <= 0.5])),
                                                                        np.concatenate(([0.0], strain[strain <= 0.5])))) / 1e6,
                         "plate_force_plateau_MPa": plate_plateau / 1e6, "end_strain": float(strain[-1]),
+                        "pore_excess_20_40_MPa": (band_mean(e_pw, excess, 0.2, 0.4) if e_pw[-1] >= 0.4 else float("nan")) / 1e6,
+                        "outer_wall_collapse_MPa": outer_wall_collapse(scene, side) / 1e6,
+                        "outer_wall_out_30_mm": at_strain(e_pw, wall_out, 0.3) * 1e3,
+                        "outer_wall_out_50_mm": at_strain(e_pw, wall_out, 0.5) * 1e3,
                         "particles": particles, "steps": steps, "wall_s": wall})
     empty = {(r["a_mm"], r["cells_per_edge"]): r for r in summary if not r["filled"]}
     for r in summary:  # NaN where the empty run of the same cell is not in the output (--only)
@@ -399,6 +476,9 @@ def filled_study(args):
               f"{r['densification_strain']:.3f}  absorbed {r['absorbed_MJ_per_m3']:.3f} MJ/m^3, to 50 % "
               f"{r['absorbed_to_50pct_MJ_per_m3']:.3f} (x{r['absorbed_50_over_empty']:.3f})  {r['particles']} particles, "
               f"{r['steps']} steps, wall {r['wall_s']:.1f} s")
+        print(f"  pores' liquid above the side 20-40 %: {r['pore_excess_20_40_MPa']:.2f} MPa (the outer wall's segment "
+              f"below the window collapses at {r['outer_wall_collapse_MPa']:.2f} MPa); that segment pushed out "
+              f"{r['outer_wall_out_30_mm']:.3f} / {r['outer_wall_out_50_mm']:.3f} mm at 30 / 50 % strain")
     dashes = {0.0: 1, viscosities[0]: 2}
     plot_curves(os.path.join(out, "lattice_filled_stress_strain"), summary,
                 lambda r: dashes.get(r["viscosity_Pa_s"], 3),
