@@ -103,4 +103,14 @@ inline constexpr double kGeneratorFaceTolerance = 1e-9;
 /// Pinned by: tests/unit/mpm/test_probes.cpp, ProbeRecorder.PicksTheNearestParticleAndTheLowestIdOnTies.
 inline constexpr double kProbeTieTolerance = 1e-10;
 
+/// The particle generator's check of what the particles fill against the shape (RegionVolume):
+/// sample points per particle spacing and direction in the cells the particle lattice does not
+/// fill whole (16 in 1D and 2D: 1024 points per cut cell at 2 particles per direction; 6 in 3D:
+/// 1728; a face is placed within half a sample spacing), and
+/// the relative difference above which the run's log warns (geometryVolumeWarnings).
+/// Pinned by: tests/unit/mpm/test_solver_setup.cpp, ParticleGeneration.ReportsAShapeRoundedByTheLattice.
+inline constexpr int kShapeVolumeSamples2D = 16;
+inline constexpr int kShapeVolumeSamples3D = 6;
+inline constexpr double kGeometryVolumeWarning = 0.01;
+
 }  // namespace mpmice::mpm

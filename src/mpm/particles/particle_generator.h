@@ -9,6 +9,8 @@
 /// object's velocity and temperature, and half its spacing per direction (GIMP's half-width).
 /// Errors: a solid object reaching outside the mesh (except across symmetry faces), density <= 0.
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "mpm/particles/particle_set.h"
 #include "core/scene/scene.h"
@@ -18,8 +20,26 @@ namespace mpmice::mpm {
 /// Membership test of a shape (default: ShapeSpec::contains).
 using ContainsFn = std::function<bool(const core::ShapeSpec&, const core::RealVect&, int dim)>;
 
-/// Appends the particles of the cells in `cells` (owned cells of this rank) to `out`.
+/// What a solid geometry object asked for against what its particles fill (this rank's cells;
+/// sums over ranks add): the particles' volume, and the shape's volume inside the mesh (less
+/// what a later solid object claims), measured by sampling the cells the particle lattice does not
+/// fill whole (kShapeVolumeSamples points per particle spacing and direction). A face of a shape
+/// between two particle centres rounds to the nearer one: a box face half a spacing off the
+/// lattice moves by up to half a spacing (docs/mpm.md "Geometry: what the particles fill").
+struct RegionVolume {
+  double particles = 0;  ///< sum of the particles' volumes [m^dim]
+  double shape = 0;      ///< the shape's volume inside the mesh [m^dim]
+};
+
+/// Appends the particles of the cells in `cells` (owned cells of this rank) to `out`. With
+/// `volumes`, also fills it per geometry object (index as scene.geometry; 0 for fluid objects).
 void generateParticles(const core::Scene& scene, const core::Box& cells, ParticleSet& out,
-                       const ContainsFn& contains);
+                       const ContainsFn& contains, std::vector<RegionVolume>* volumes = nullptr);
+
+/// One message per solid geometry object whose particles' volume differs from its shape's by more
+/// than `tolerance` (relative; summed volumes over every rank), naming the object, both volumes,
+/// the particle spacing and what to change. Empty when every object is represented within it.
+std::vector<std::string> geometryVolumeWarnings(const core::Scene& scene, const std::vector<RegionVolume>& volumes,
+                                                double tolerance);
 
 }  // namespace mpmice::mpm

@@ -72,7 +72,15 @@ MpmSolver::MpmSolver(const core::Scene& scene, const core::Comm& comm, ContainsF
     contains = [](const core::ShapeSpec& s, const core::RealVect& x, int dim) {
       return s.contains(x, dim);
     };
-  generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains);
+  {
+    std::vector<RegionVolume> volumes;
+    generateParticles(scene_, decomp_.cellBox(comm_.rank()), p_, contains, &volumes);
+    std::vector<double> v(2 * volumes.size());
+    for (std::size_t r = 0; r < volumes.size(); ++r) v[2 * r] = volumes[r].particles, v[2 * r + 1] = volumes[r].shape;
+    comm_.sumInPlace(v);
+    for (std::size_t r = 0; r < volumes.size(); ++r) volumes[r] = {v[2 * r], v[2 * r + 1]};
+    geometryWarnings_ = geometryVolumeWarnings(scene_, volumes, kGeometryVolumeWarning);
+  }
   // A solid the scene places but no particle represents is an input error, named here rather
   // than found later by the output or the physics.
   {

@@ -101,6 +101,10 @@ class MpmSolver {
   [[nodiscard]] Grid& grid() { return *grid_; }
   [[nodiscard]] const Grid& grid() const { return *grid_; }
   [[nodiscard]] long long globalParticleCount() const;
+  /// The solid geometry objects whose particles fill a volume off their shape's by more than
+  /// kGeometryVolumeWarning (geometryVolumeWarnings; measured at set-up, every rank's cells): the
+  /// runners log them as warnings at the start.
+  [[nodiscard]] const std::vector<std::string>& geometryWarnings() const { return geometryWarnings_; }
   [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] long stepCount() const { return step_; }
   [[nodiscard]] ShapeKind shapeKind() const { return shape_; }
@@ -307,6 +311,7 @@ class MpmSolver {
   std::vector<double> workScratch_;  // the models' work, discarded with gridStressWork_
   double forceWorkUpdate_ = 0;       // the forces' work at the grid update (before the coupling's increments)
   std::vector<double> nodeWeight_;  // this rank's share of each node (its owned cells' node shares)
+  std::vector<std::string> geometryWarnings_;  // geometryWarnings()
   // Reused scratch (no allocations in the step).
   std::vector<std::uint64_t> sortKey_;
   std::vector<std::uint32_t> perm_;

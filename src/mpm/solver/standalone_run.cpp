@@ -26,6 +26,8 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
                           core::ProgressOptions{2.0, 0, scene.time.max_steps, solver.stepCount()});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
   if (comm.root())
+    for (const std::string& w : solver.geometryWarnings()) log << "warning: " << w << "\n";
+  if (comm.root())
     log << "  particles: " << np << "\n  shape function: " << scene.mpm.shape_function << ", update: "
         << scene.mpm.update << ", flip: " << scene.mpm.flip << ", damping: " << scene.mpm.damping
         << " 1/s, cfl: " << scene.time.cfl << "\n"

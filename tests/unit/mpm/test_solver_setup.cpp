@@ -61,6 +61,47 @@ TEST(ParticleGeneration, EachParticleTakesTheLinearVelocityAtItsPosition) {
   }
 }
 
+// The particles fill whole sub-cells: a box face between two particle centres rounds to the
+// nearer one (a piston's face 0.2 m at 32 cells per metre became 0.203 m, its gap 0.406 m instead
+// of 0.4, silently). The solver measures what each solid object's particles fill against its shape
+// and names the object when they differ by more than kGeometryVolumeWarning.
+TEST(ParticleGeneration, ReportsAShapeRoundedByTheLattice) {
+  EXPECT_TRUE(MpmSolver(blockScene(), self()).geometryWarnings().empty());  // faces on the lattice
+  core::Scene s = blockScene();
+  s.geometry[0].shape.hi[0] = 1.46;  // the particle lattice: 0.125 in x; centres at 1.4375
+  const MpmSolver solver(s, self());
+  ASSERT_EQ(solver.geometryWarnings().size(), 1u);
+  const std::string& w = solver.geometryWarnings()[0];
+  EXPECT_NE(w.find("geometry.block: its particles fill 0.5 m^2, the shape 0.48"), std::string::npos) << w;
+  EXPECT_NE(w.find("(+4.0"), std::string::npos) << w;  // 0.5 / 0.48 - 1 = +4.17 %, the face sampled
+  EXPECT_NE(w.find("particle spacing 0.125 x 0.08333 m"), std::string::npos) << w;
+  {
+    ParticleSet p;
+    std::vector<RegionVolume> v;
+    generateParticles(s, s.mesh.cellBox(), p,
+                      [](const core::ShapeSpec& shape, const core::RealVect& x, int dim) { return shape.contains(x, dim); },
+                      &v);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_DOUBLE_EQ(v[0].particles, 0.5);
+    EXPECT_NEAR(v[0].shape, 0.96 * 0.5, 0.5 * 0.25 / (2 * kShapeVolumeSamples2D) * 0.5);  // half a sample
+  }
+  // A curved shape: the sampled volume of the disk is its area, and at 16 particles across its
+  // radius the particles fill it within kGeometryVolumeWarning.
+  const core::Scene d = pr::disksScene(40, "usl", 1.0);
+  ParticleSet p;
+  std::vector<RegionVolume> v;
+  generateParticles(d, d.mesh.cellBox(), p,
+                    [](const core::ShapeSpec& shape, const core::RealVect& x, int dim) { return shape.contains(x, dim); },
+                    &v);
+  ASSERT_EQ(v.size(), d.geometry.size());
+  for (std::size_t r = 0; r < v.size(); ++r) {
+    if (!(v[r].shape > 0)) continue;
+    EXPECT_NEAR(v[r].shape, M_PI * 0.2 * 0.2, 2e-3 * M_PI * 0.2 * 0.2) << d.geometry[r].name;
+    EXPECT_NEAR(v[r].particles, v[r].shape, kGeometryVolumeWarning * v[r].shape) << d.geometry[r].name;
+  }
+  EXPECT_TRUE(geometryVolumeWarnings(d, v, kGeometryVolumeWarning).empty());
+}
+
 TEST(ParticleGeneration, DiskCountNearArea) {
   auto s = pr::disksScene(40, "usl", 1.0);
   MpmSolver solver(s, self());

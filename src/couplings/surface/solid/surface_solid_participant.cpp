@@ -130,6 +130,7 @@ int runSurfaceSolidParticipant(const Participant& p, const core::Scene& scene, s
                      std::string(core::name(scene.coupling.schedule)) + ")",
                  scene.mesh.describe(), comm.size());
   if (root) {
+    for (const std::string& w : mpm.geometryWarnings()) log << "warning: " << w << "\n";
     log << "  interface: " << nSurface << " surface particles of '" << iface.solid << "'; patch '" << iface.patch
         << "' with " << setup.faces << " faces, " << setup.points << " points (depth " << setup.depth
         << " m); mapping " << forceMap->name() << "; window " << setup.dt << " s\n"
