@@ -297,6 +297,13 @@ struct CouplingSpec {
   // of the solid's cell fraction) or "mpm" (MPM's face transport of its node-to-cell average, the
   // fluids locked to the solid only at faces inside it; docs/flap.md "Mixed cells").
   std::string solid_transport = "ice";
+  // The pressure MPM's mean-stress correction gives a solid's surface particles (those whose
+  // stencil sees the surface): "interpolated" (from the nodes, the fluid's pressure among the
+  // cells around them: the static load of the fluid reaches into the surface, the seed cylinder's
+  // Eq. 13) or "cell" (each particle its own cell's, as inside the solid: no net work on the
+  // solid's own modes; a soft solid in a liquid, docs/verification-coupled.md "Added mass over
+  // many periods").
+  std::string surface_pressure = "interpolated";
   bool operator==(const CouplingSpec&) const = default;
 };
 

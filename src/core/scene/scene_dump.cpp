@@ -283,7 +283,8 @@ void options(std::ostream& o, const Scene& s) {
   o << "coupling:\n  schedule: " << name(c.schedule) << "\n  fluid: " << name(c.fluid) << "\n  min_iterations: "
     << c.min_iterations << "\n  max_iterations: " << c.max_iterations << "\n  accept_unconverged: "
     << flag(c.accept_unconverged) << "\n  timeout: " << num(c.timeout) << "\n  ranks: {mpm: " << c.mpm_ranks
-    << ", ice: " << c.ice_ranks << "}\n  solid_transport: " << c.solid_transport << "\n";
+    << ", ice: " << c.ice_ranks << "}\n  solid_transport: " << c.solid_transport
+    << "\n  surface_pressure: " << c.surface_pressure << "\n";
   if (!c.convergence.empty()) {
     o << "  convergence:\n";
     for (const auto& cv : c.convergence)

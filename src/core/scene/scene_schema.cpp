@@ -644,7 +644,7 @@ class SchemaReader {
   void readCoupling(const YamlValue& v) {
     const YamlMap m = v.map();
     m.allow({"schedule", "fluid", "min_iterations", "max_iterations", "accept_unconverged", "timeout", "ranks",
-             "convergence", "acceleration", "interface", "solid_transport"});
+             "convergence", "acceleration", "interface", "solid_transport", "surface_pressure"});
     CouplingSpec& c = s_.coupling;
     c.schedule = m.option("schedule", c.schedule, kScheduleNames, "coupling schedule");
     c.fluid = m.option("fluid", c.fluid, kFluidSolverNames, "fluid solver");
@@ -668,6 +668,10 @@ class SchemaReader {
     // ice: ICE's face fluxes of the solid's cell fraction (the default); mpm: MPM sends, per cell
     // face, the face transport of its node-to-cell average (docs/flap.md "Mixed cells").
     c.solid_transport = m.choice("solid_transport", c.solid_transport, {"ice", "mpm"}, "solid transport");
+    // interpolated: the surface particles' mean-stress correction takes the node-interpolated
+    // pressure (the default); cell: every particle its own cell's (docs/verification-coupled.md).
+    c.surface_pressure =
+        m.choice("surface_pressure", c.surface_pressure, {"interpolated", "cell"}, "surface pressure");
     if (const auto r = m.get("ranks")) {
       const YamlMap ranks = r->map();
       ranks.allow({"mpm", "ice"});

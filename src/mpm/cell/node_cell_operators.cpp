@@ -433,6 +433,7 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
         if (nw[src] > 0 && nv[src] != 0.0) openQ_[k] = nv[src] / nw[src], openAny_ = true;
       }
   }
+  const bool ownCellAtSurface = scene_.coupling.surface_pressure == "cell";
   stressForce_.assign(5 * p_.size(), 0.0);  // for cellCouplingWork
   stressForceStamp_ = generation_;
   kernels::dispatch(shape_, mesh_.dim(), [&]<class S, int D>() {
@@ -464,14 +465,17 @@ void NodeCellOperators::addCellPressureStress(const Field& pcell, double pRef) {
       // Inside the solid (its stencil sees no surface: a below kInteriorSurfaceWeight) a particle
       // takes its own cell's pressure, the cell whose pressure force it receives (addCellForce:
       // each cell's force to its particles by mass shares); elsewhere the interpolated one, in
-      // which the gas pressure falls across the surface (the cylinder's Eq. 13, docs/coupling.md).
+      // which the gas pressure falls across the surface (the cylinder's Eq. 13, docs/coupling.md),
+      // unless coupling.surface_pressure is "cell": there the interpolation, which averages the
+      // fluid's cells into the surface particles' stress, did net work on a soft slab's own modes
+      // under water (docs/verification-coupled.md "Added mass over many periods").
       // With the interpolated pressure inside the solid as well, the piston's copper rang up at a
       // rate that does not fall with the step (FLIP: no damping but the pressure increment's,
       // ~dt K), e-fold in ~0.1 ms below CFL 0.4 at 200 cells, until the trace of air in its cells
       // followed the pressure swings to 1e9 K (docs/verification-coupled.md, "The piston stopped
       // at small steps").
       double q = qNodes;
-      if (a < kInteriorSurfaceWeight) {
+      if (a < kInteriorSurfaceWeight || ownCellAtSurface) {
         const auto own = cellOfParticle(mesh_, p_, i, cells_);
         q = pcell(own[0], own[1], own[2]) - pRef;
       }

@@ -129,6 +129,8 @@ std::vector<BadScene> badScenes() {
        {"test.yaml:8:13", "coupling.schedule: unknown coupling schedule 'monolitic'",
         "valid: explicit_parallel, explicit_serial, implicit_parallel, implicit_serial, monolithic",
         "did you mean 'monolithic'?"}},
+      {"unknown surface pressure", kBase + "coupling:\n  surface_pressure: cells\n",
+       {"test.yaml:8:", "coupling.surface_pressure: unknown surface pressure 'cells'", "cell", "interpolated"}},
       {"unknown acceleration", kBase + "coupling:\n  acceleration: {type: aitkin}\n",
        {"coupling.acceleration.type: unknown acceleration 'aitkin'", "valid: aitken, constant, iqn_ils, none",
         "did you mean 'aitken'?"}},
