@@ -348,9 +348,9 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
          "density": beside_rho, "pressure": P_AMBIENT}]
     s["geometry"][0:0] = [
         {"name": "filler", "shape": {"type": "box", "lo": lo, "hi": [edge, bottom]}, "material": "silicone",
-         "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300}] + beside + [
+         "density": FILLER_RHO, "pressure": P_AMBIENT}] + beside + [
         {"name": "buffer", "shape": {"type": "box", "lo": [lo[0], bottom], "hi": hi}, "material": "buffer",
-         "velocity": list(plate["velocity"]), "density": FILLER_RHO, "pressure": P_AMBIENT, "temperature": 300}]
+         "velocity": list(plate["velocity"]), "density": FILLER_RHO, "pressure": P_AMBIENT}]
     s["boundary"]["x+"] = {"type": "outflow", "pressure": P_AMBIENT}   # the specimen's open side
     s["boundary"]["y+"] = {"type": "outflow", "pressure": P_AMBIENT}   # refills above the plate
     s["ice"] = {"advection": "first_order", "exchange": {"momentum": 1.0e15, "heat": 0}}

@@ -198,8 +198,11 @@ void geometry(std::ostream& o, const Scene& s) {
       for (int i = 0; i < dim; ++i) o << (i ? ", " : "") << vec(r.velocity_gradient[static_cast<std::size_t>(i)], dim);
       o << "]\n";
     }
-    o << "    temperature: " << num(r.temperature) << "\n";
     const MaterialSpec* first = r.fill.empty() ? nullptr : s.material(r.fill.front().material);
+    // A fluid region with a density takes its state from pressure and density (a temperature
+    // beside them is an error).
+    if (!r.density || (first && first->kind == MaterialKind::Solid))
+      o << "    temperature: " << num(r.temperature) << "\n";
     if (first && first->kind == MaterialKind::Solid) {
       o << "    particles_per_cell: " << ivec(r.particles_per_cell, dim) << "\n";
     } else {

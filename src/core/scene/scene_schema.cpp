@@ -379,6 +379,12 @@ class SchemaReader {
     if (!solid) {
       r.pressure = m.number("pressure", Range::positive());               // [Pa], required
       if (m.has("density")) r.density = m.number("density", Range::positive());  // [kg/m^3]
+      // pressure and one of density or temperature fix a fluid's state: the third was ignored
+      // (a filler given 970 kg/m^3, 50 MPa and 300 K started at 663.7 K, silently).
+      if (m.has("density") && m.has("temperature"))
+        m.required("temperature").fail("give density or temperature for a fluid region, not both: with the pressure "
+                                       "either fixes the state (density " + rounded(*r.density) + " kg/m^3 was "
+                                       "given, so this temperature was ignored)");
     } else {
       // particles_per_cell: one integer or one per direction (directions beyond dim hold 1)
       IntVect ppc{1, 1, 1};

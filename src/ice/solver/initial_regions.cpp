@@ -1,6 +1,7 @@
 #include "ice/solver/initial_regions.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/scene/yaml_reader.h"
@@ -71,6 +72,28 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
                      " Pa is not below the pressure " + formatNumber(*reg.pressure) + " Pa of geometry." + reg.name +
                      " where it starts; the cut-off (a vapour pressure or a tensile limit) must lie below the liquid's " +
                      "ambient pressure");
+    }
+    // Each fluid's start state in this region lies above 0 K: a pressure below a JWL products'
+    // or a stiffened gas's cold curve at the given density gives e below the cold energy, which
+    // the first steps found (products at -11708 K named in a cell of the foam beside them).
+    for (const core::FillSpec& f : reg.fill) {
+      const int r = scene.materialIndex(f.material);
+      if (external(r) || !(f.volume_fraction > 0)) continue;
+      const Eos& law = *eos[static_cast<std::size_t>(r)];
+      double rho = 0, e = 0;
+      resolveState(law, *reg.pressure, reg.temperature, reg.density, &rho, &e);
+      const double T = rho > 0 ? law.temperature(rho, e) : 0.0;
+      auto g = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.6g", v);
+        return std::string(b);
+      };
+      if (rho > 0 && std::isfinite(e) && !(T > 0))
+        badInput(reg.where, "geometry." + reg.name + ": material '" + f.material + "' at pressure " +
+                               g(*reg.pressure) + " Pa and density " + g(rho) + " kg/m^3 starts at T = " + g(T) +
+                               " K (specific energy " + g(e) + " J/kg by its equation of state, whose pressure at 0 K " +
+                               "and this density is " + g(law.pressure(rho, law.coldEnergy(rho))) +
+                               " Pa); expected T > 0: raise geometry." + reg.name + ".pressure or lower its density");
     }
     for (const core::FillSpec& f : reg.fill) {
       const int r = scene.materialIndex(f.material);

@@ -31,7 +31,7 @@ materials:
     model: {type: linear_elastic, youngs_modulus: 2.5e9, poissons_ratio: 0.35}
     eos: {type: solid_bulk, threshold_pressure: 5.0e7}
 geometry:
-  - {name: filler, shape: {type: box, lo: [0.0, 0.0], hi: [0.006, 0.0015]}, material: silicone, density: 970.0, pressure: 5.0e7, temperature: 300}
+  - {name: filler, shape: {type: box, lo: [0.0, 0.0], hi: [0.006, 0.0015]}, material: silicone, density: 970.0, pressure: 5.0e7}
   - {name: bar, shape: {type: box, lo: [0.0006, 0.0], hi: [0.0027, 0.0003]}, material: polymer, velocity: [14.0, 0.0], particles_per_cell: 2, temperature: 300}
 boundary:
   x-: {type: outflow, pressure: 5.0e7}
