@@ -46,6 +46,21 @@ struct CellCover {
 };
 CellCover coverAt(const RegionPlan& plan, const core::RealVect& x, int dim);
 
+/// What each fluid region fills against its shape: cells are filled by their centre (the last
+/// region holding it wins), so a face of a region between two cell centres rounds to the nearer
+/// one. Per scene.geometry entry (0 for solid objects): the cells' volume the region fills (outside
+/// solids) and the volume its shape wins at points (the same rule point by point), the cells whose
+/// corners and centre all have one cover counted whole, the others sampled at kFillSamples points
+/// per direction. This rank's owned cells; sums over ranks add.
+struct FillVolume {
+  double cells = 0, shape = 0;
+};
+std::vector<FillVolume> measureFill(const core::Scene& scene, const RegionPlan& plan, const core::Mesh& mesh,
+                                    const core::Box& owned);
+/// One message per fluid region whose cells' volume differs from its shape's by more than
+/// `tolerance` (relative), naming the region, both volumes and the cell spacing.
+std::vector<std::string> fillWarnings(const core::Scene& scene, const std::vector<FillVolume>& v, double tolerance);
+
 /// A cell (i, j, k) of a scene with a fluid that no fluid region and no solid covers is an error.
 void requireCovered(const RegionPlan& plan, const CellCover& cover, int i, int j, int k);
 

@@ -133,6 +133,14 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   // ---- regions: validate, then each material's background state (first region that fills it)
   const RegionPlan plan = planRegions(scene, eos);
   const std::vector<BackgroundState>& bg = plan.background;
+  {
+    std::vector<FillVolume> fill = measureFill(scene, plan, mesh_, owned_);
+    std::vector<double> v(2 * fill.size());
+    for (std::size_t r = 0; r < fill.size(); ++r) v[2 * r] = fill[r].cells, v[2 * r + 1] = fill[r].shape;
+    comm_.sumInPlace(v);
+    for (std::size_t r = 0; r < fill.size(); ++r) fill[r] = {v[2 * r], v[2 * r + 1]};
+    geometryWarnings_ = fillWarnings(scene, fill, kFillVolumeWarning);
+  }
 
   // ---- the initial state, cell by cell (later regions override earlier ones)
   const double V = mesh_.cellVolume();
