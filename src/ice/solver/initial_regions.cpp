@@ -88,12 +88,14 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
         std::snprintf(b, sizeof b, "%.6g", v);
         return std::string(b);
       };
-      if (rho > 0 && std::isfinite(e) && !(T > 0))
+      // T = 0 exactly is a law's reference state without a reference temperature (a Mie-Grueneisen
+      // liquid at rho0 and p0: e = 0); below it the state lies under the cold curve.
+      if (rho > 0 && std::isfinite(e) && T < 0)
         badInput(reg.where, "geometry." + reg.name + ": material '" + f.material + "' at pressure " +
                                g(*reg.pressure) + " Pa and density " + g(rho) + " kg/m^3 starts at T = " + g(T) +
                                " K (specific energy " + g(e) + " J/kg by its equation of state, whose pressure at 0 K " +
                                "and this density is " + g(law.pressure(rho, law.coldEnergy(rho))) +
-                               " Pa); expected T > 0: raise geometry." + reg.name + ".pressure or lower its density");
+                               " Pa); expected T >= 0: raise geometry." + reg.name + ".pressure or lower its density");
     }
     for (const core::FillSpec& f : reg.fill) {
       const int r = scene.materialIndex(f.material);
