@@ -37,6 +37,20 @@ class Mesh {
   /// Cell holding coordinate x in direction d (may lie outside 0..n-1 for points off the mesh).
   [[nodiscard]] int cellOf(int d, double x) const;
   [[nodiscard]] bool insideDomain(const RealVect& x) const;
+  /// Calls f(x, sub) at the centres of the n[0] x n[1] x n[2] equal sub-cells of cell ijk (sub the
+  /// sub-cell's index per direction, the first fastest; coordinates beyond dim are 0): the particle
+  /// points of a cell, or sample points.
+  template <class F>
+  void forSubcellCentres(const int ijk[3], const int n[3], F&& f) const {
+    for (int c = 0; c < n[2]; ++c)
+      for (int b = 0; b < n[1]; ++b)
+        for (int a = 0; a < n[0]; ++a) {
+          const int sub[3] = {a, b, c};
+          RealVect x{0, 0, 0};
+          for (int d = 0; d < dim_; ++d) x[d] = node(d, ijk[d]) + (sub[d] + 0.5) * dx_[d] / n[d];
+          f(x, sub);
+        }
+  }
   [[nodiscard]] std::string describe() const;
 
   friend bool operator==(const Mesh& a, const Mesh& b) {

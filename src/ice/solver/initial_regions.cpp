@@ -172,15 +172,9 @@ std::vector<FillVolume> measureFill(const core::Scene& scene, const RegionPlan& 
     int n[3] = {1, 1, 1};
     for (int d = 0; d < dim; ++d) n[d] = kFillSamples;
     const double w = V / double(n[0] * n[1] * n[2]);
-    for (int c = 0; c < n[2]; ++c)
-      for (int b = 0; b < n[1]; ++b)
-        for (int a = 0; a < n[0]; ++a) {
-          const int sub[3] = {a, b, c};
-          core::RealVect p{0, 0, 0};
-          for (int d = 0; d < dim; ++d) p[d] = mesh.node(d, ijk[d]) + (sub[d] + 0.5) * mesh.dx(d) / n[d];
-          const std::ptrdiff_t r = winner(p);
-          if (r >= 0) out[static_cast<std::size_t>(r)].shape += w;
-        }
+    mesh.forSubcellCentres(ijk, n, [&](const core::RealVect& p, const int*) {
+      if (const std::ptrdiff_t r = winner(p); r >= 0) out[static_cast<std::size_t>(r)].shape += w;
+    });
   });
   return out;
 }

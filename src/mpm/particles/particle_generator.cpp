@@ -78,28 +78,15 @@ void generateParticles(const core::Scene& scene, const core::Box& cells, Particl
       int ppc[3] = {1, 1, 1};
       for (int d = 0; d < dim; ++d) ppc[d] = reg.particles_per_cell[d];
       const double vol = mesh.cellVolume() / (ppc[0] * ppc[1] * ppc[2]);
+      core::RealVect half{0, 0, 0};
+      for (int d = 0; d < dim; ++d) half[d] = 0.5 * mesh.dx(d) / ppc[d];
       const std::size_t before = out.size();
-      for (int c = 0; c < ppc[2]; ++c)
-        for (int b = 0; b < ppc[1]; ++b)
-          for (int a = 0; a < ppc[0]; ++a) {
-            const int sub[3] = {a, b, c};
-            core::RealVect x{0, 0, 0}, half{0, 0, 0};
-            for (int d = 0; d < dim; ++d) {
-              x[d] = mesh.node(d, ijk[d]) + (sub[d] + 0.5) * mesh.dx(d) / ppc[d];
-              half[d] = 0.5 * mesh.dx(d) / ppc[d];
-            }
-            if (!contains(reg.shape, x, dim)) continue;
-            bool later = false;  // a later solid object claims this point
-            for (std::size_t t = s + 1; t < solids.size() && !later; ++t)
-              later = solids[t].first != solids[s].first &&
-                      contains(scene.geometry[solids[t].first].shape, x, dim);
-            if (later) continue;
-            const std::int64_t subId = a + 64 * (b + 64 * c);
-            const std::int64_t gid =
-                ((static_cast<std::int64_t>(s) * ncells + cellId) << 18) + subId;
-            out.addParticle(x, reg.velocityAt(x), scene.materials[m].density * vol, vol, half, m,
-                            reg.temperature, gid);
-          }
+      mesh.forSubcellCentres(ijk, ppc, [&](const core::RealVect& x, const int* sub) {
+        if (!holds(s, x)) return;  // outside the shape, or a later solid object claims it
+        const std::int64_t subId = sub[0] + 64 * (sub[1] + 64 * sub[2]);
+        const std::int64_t gid = ((static_cast<std::int64_t>(s) * ncells + cellId) << 18) + subId;
+        out.addParticle(x, reg.velocityAt(x), scene.materials[m].density * vol, vol, half, m, reg.temperature, gid);
+      });
       if (!volumes) continue;
       // The shape's volume in this cell: whole where every particle point and every corner is held,
       // else sampled (cells outside the shape's bounds hold none of it).
@@ -129,14 +116,7 @@ void generateParticles(const core::Scene& scene, const core::Box& cells, Particl
       int n[3] = {1, 1, 1};
       for (int d = 0; d < dim; ++d) n[d] = ppc[d] * (dim == 3 ? kShapeVolumeSamples3D : kShapeVolumeSamples2D);
       long in = 0;
-      for (int c = 0; c < n[2]; ++c)
-        for (int b = 0; b < n[1]; ++b)
-          for (int a = 0; a < n[0]; ++a) {
-            const int sub[3] = {a, b, c};
-            core::RealVect x{0, 0, 0};
-            for (int d = 0; d < dim; ++d) x[d] = mesh.node(d, ijk[d]) + (sub[d] + 0.5) * mesh.dx(d) / n[d];
-            if (holds(s, x)) ++in;
-          }
+      mesh.forSubcellCentres(ijk, n, [&](const core::RealVect& x, const int*) { in += holds(s, x) ? 1 : 0; });
       rv.shape += mesh.cellVolume() * double(in) / double(n[0] * n[1] * n[2]);
     }
   });
