@@ -67,12 +67,20 @@ core::Scene sceneWith(core::Schedule schedule, core::AccelerationType acc = core
 }
 
 /// The slab's mean displacement every step; the period from its first down and up crossings.
-/// exactAmplitude: the mode's, the particles' mean start velocity over omega (the mean
-/// displacement is (v0 / omega) sin(omega t); the banded start's higher modes add 0.1 %).
+/// exactAmplitude: the mode's (modeAmplitude).
 struct Ringing {
   double tDown = -1, tUp = -1, peakFirst = 0, peakSecond = 0, exactAmplitude = 0;
   [[nodiscard]] double period() const { return tUp; }
 };
+
+/// The mode's amplitude of the mean displacement: the particles' mean start velocity over omega
+/// (the banded start's higher modes add 0.1 %). Called before the run moves.
+double modeAmplitude(CoupledRun& run) {
+  const auto& p = run.mpm.particles();
+  double v = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) v += p.v[0][i] / double(p.size());
+  return v / exactOmega(run.scene);
+}
 
 Ringing ring(CoupledRun& run, double until) {
   const auto& p = run.mpm.particles();
@@ -82,8 +90,7 @@ Ringing ring(CoupledRun& run, double until) {
     return s / double(p.size());
   };
   Ringing r;
-  for (std::size_t i = 0; i < p.size(); ++i) r.exactAmplitude += p.v[0][i] / double(p.size());
-  r.exactAmplitude /= exactOmega(run.scene);
+  r.exactAmplitude = modeAmplitude(run);
   double last = 0, lastT = 0;
   run.runTo(until, [&] {
     const double d = mean(), t = run.time();
@@ -143,12 +150,9 @@ TEST(AddedMass, RingsForFourPeriodsWithoutAnotherModeGrowing) {
   s.time.end = 0.2;
   CoupledRun run(s);
   const auto& p = run.mpm.particles();
-  double v0 = 0, amplitude = 0, vmaxLast = 0, exact = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    v0 = std::max(v0, std::abs(p.v[0][i]));
-    exact += p.v[0][i] / double(p.size());
-  }
-  exact /= exactOmega(run.scene);
+  const double exact = modeAmplitude(run);
+  double v0 = 0, amplitude = 0, vmaxLast = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) v0 = std::max(v0, std::abs(p.v[0][i]));
   const double T = 2 * kPi / exactOmega(run.scene);
   run.runTo(s.time.end, [&] {
     if (run.time() < s.time.end - T) return;  // the last period
