@@ -109,11 +109,10 @@ inline constexpr double kMinEnergyShare = 0.1;
 /// pins the value (any share in (0, 1) keeps e and v positive by construction).
 inline constexpr double kMinRemainderShare = 0.1;
 
-/// Fluid regions' fill check (measureFill): sample points per direction in a cell whose corners and
-/// centre are not all filled from one region (8: 64 in 2D, 512 in 3D), and the relative difference
-/// between the cells' and the shape's volume above which the run's log warns.
-/// Pinned by: tests/unit/ice/test_bad_input.cpp, IceBadInput.AFluidRegionRoundedByTheCellsIsNamed.
+/// Fluid regions' sub-cell fill (initial_regions.h cellShares): sample points per direction in a
+/// cell whose corners and centre are not all filled from one region (8: 64 in 2D, 512 in 3D); a
+/// region's face between two cell centres then holds its volume to 1/16 of a cell.
+/// Pinned by: tests/unit/ice/test_initial_fill.cpp.
 inline constexpr int kFillSamples = 8;
-inline constexpr double kFillVolumeWarning = 0.01;
 
 }  // namespace mpmice::ice

@@ -510,6 +510,9 @@ void IceSolver::fitFluidsToExternalVolume() {
       const double rho = m.eos->density(p0, m.eint(i, j, k));
       if (rho > 0) ((held >> r) & 1u ? vheld : vother) += m.mass(i, j, k) / rho;
     }
+    // No solid here: the fluids fill the cell already (regions of different pressures may share
+    // it, initial_regions.h cellShares, each fluid at its own).
+    if (!(vext > 0) && held == 0) return;
     if (!(vheld + vother > 0)) return;
     const double vfree = std::max(V - vext, (1.0 - kMaxSolidFraction) * V);
     // The region's fluids fill what the other traces leave; without them every fluid is scaled alike.

@@ -158,9 +158,6 @@ class IceSolver {
   [[nodiscard]] const core::Decomposition& decomposition() const { return decomp_; }
   [[nodiscard]] const core::Box& ownedBox() const { return owned_; }
   [[nodiscard]] const core::Comm& comm() const { return comm_; }
-  /// The fluid regions whose cells hold a volume off their shape's by more than kFillVolumeWarning
-  /// (initial_regions.h measureFill, every rank's cells): the runners log them at the start.
-  [[nodiscard]] const std::vector<std::string>& geometryWarnings() const { return geometryWarnings_; }
   /// Totals over every rank (collective).
   [[nodiscard]] Totals totals() const;
   /// Output fields over the owned cells: pressure, iterations, and per material density,
@@ -237,7 +234,6 @@ class IceSolver {
   void solvePressureSystem();
 
   core::Comm comm_;
-  std::vector<std::string> geometryWarnings_;  // geometryWarnings()
   core::Mesh mesh_;
   core::Decomposition decomp_;
   core::Box owned_;

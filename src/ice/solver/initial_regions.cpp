@@ -140,66 +140,42 @@ void requireCovered(const RegionPlan& plan, const CellCover& cover, int i, int j
                                 std::to_string(k) + " is covered by no fluid region (add a background region)");
 }
 
-std::vector<FillVolume> measureFill(const core::Scene& scene, const RegionPlan& plan, const core::Mesh& mesh,
-                                    const core::Box& owned) {
-  std::vector<FillVolume> out(scene.geometry.size());
+void cellShares(const RegionPlan& plan, const core::Mesh& mesh, const int ijk[3], const CellCover& centre,
+                std::vector<RegionShare>* out) {
+  out->clear();
+  out->push_back({centre.fluid, 1.0});
+  if (centre.inSolid) return;
   const int dim = mesh.dim();
-  const double V = mesh.cellVolume();
-  auto index = [&](const core::RegionSpec* r) -> std::ptrdiff_t {
-    return r ? r - scene.geometry.data() : -1;
-  };
-  // The region a point's fluid comes from (-1: none, or inside a solid declared after it).
-  auto winner = [&](const core::RealVect& x) {
+  // The region a point's fluid comes from (null: in a solid declared after its region, or none).
+  auto winner = [&](const core::RealVect& x) -> const core::RegionSpec* {
     const CellCover c = coverAt(plan, x, dim);
-    return c.inSolid ? std::ptrdiff_t(-1) : index(c.fluid);
+    return c.inSolid ? nullptr : c.fluid;
   };
-  core::forEach(owned, [&](int i, int j, int k) {
-    const int ijk[3] = {i, j, k};
-    core::RealVect x{0, 0, 0};
-    for (int d = 0; d < dim; ++d) x[d] = mesh.cellCenter(d, ijk[d]);
-    const std::ptrdiff_t centre = winner(x);
-    if (centre >= 0) out[static_cast<std::size_t>(centre)].cells += V;
-    bool one = true;
-    for (int corner = 0; corner < (1 << dim) && one; ++corner) {
-      core::RealVect c{0, 0, 0};
-      for (int d = 0; d < dim; ++d) c[d] = mesh.node(d, ijk[d] + ((corner >> d) & 1));
-      one = winner(c) == centre;
-    }
-    if (one) {
-      if (centre >= 0) out[static_cast<std::size_t>(centre)].shape += V;
-      return;
-    }
-    int n[3] = {1, 1, 1};
-    for (int d = 0; d < dim; ++d) n[d] = kFillSamples;
-    const double w = V / double(n[0] * n[1] * n[2]);
-    mesh.forSubcellCentres(ijk, n, [&](const core::RealVect& p, const int*) {
-      if (const std::ptrdiff_t r = winner(p); r >= 0) out[static_cast<std::size_t>(r)].shape += w;
-    });
-  });
-  return out;
-}
-
-std::vector<std::string> fillWarnings(const core::Scene& scene, const std::vector<FillVolume>& v, double tolerance) {
-  std::vector<std::string> out;
-  const int dim = scene.mesh.dim();
-  auto g = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", x);
-    return std::string(b);
-  };
-  for (std::size_t r = 0; r < v.size() && r < scene.geometry.size(); ++r) {
-    if (!(v[r].shape > 0) || std::abs(v[r].cells - v[r].shape) <= tolerance * v[r].shape) continue;
-    const auto& reg = scene.geometry[r];
-    std::string spacing;
-    for (int d = 0; d < dim; ++d) spacing += (d ? " x " : "") + g(scene.mesh.dx(d));
-    out.push_back("geometry." + reg.name + ": its cells hold " + g(v[r].cells) + " m^" + std::to_string(dim) +
-                  " of fluid, its shape " + g(v[r].shape) + " m^" + std::to_string(dim) + " (" +
-                  (v[r].cells > v[r].shape ? "+" : "") + g(100.0 * (v[r].cells / v[r].shape - 1.0)) +
-                  " %; its mass and energy with it): a cell is filled by its centre, and a face between two cell "
-                  "centres (or on one) rounds to a whole cell (cell spacing " + spacing +
-                  " m); put the region's faces on cell faces or refine mesh.spacing");
+  bool one = true;
+  for (int corner = 0; corner < (1 << dim) && one; ++corner) {
+    core::RealVect c{0, 0, 0};
+    for (int d = 0; d < dim; ++d) c[d] = mesh.node(d, ijk[d] + ((corner >> d) & 1));
+    one = winner(c) == centre.fluid;
   }
-  return out;
+  if (one) return;
+  int n[3] = {1, 1, 1};
+  for (int d = 0; d < dim; ++d) n[d] = kFillSamples;
+  std::vector<RegionShare> counts;
+  double total = 0;
+  mesh.forSubcellCentres(ijk, n, [&](const core::RealVect& p, const int*) {
+    const core::RegionSpec* r = winner(p);
+    if (!r) return;
+    total += 1;
+    for (RegionShare& s : counts)
+      if (s.region == r) {
+        s.share += 1;
+        return;
+      }
+    counts.push_back({r, 1.0});
+  });
+  if (!(total > 0)) return;
+  for (RegionShare& s : counts) s.share /= total;
+  *out = std::move(counts);
 }
 
 }  // namespace mpmice::ice

@@ -133,57 +133,113 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   // ---- regions: validate, then each material's background state (first region that fills it)
   const RegionPlan plan = planRegions(scene, eos);
   const std::vector<BackgroundState>& bg = plan.background;
-  {
-    std::vector<FillVolume> fill = measureFill(scene, plan, mesh_, owned_);
-    std::vector<double> v(2 * fill.size());
-    for (std::size_t r = 0; r < fill.size(); ++r) v[2 * r] = fill[r].cells, v[2 * r + 1] = fill[r].shape;
-    comm_.sumInPlace(v);
-    for (std::size_t r = 0; r < fill.size(); ++r) fill[r] = {v[2 * r], v[2 * r + 1]};
-    geometryWarnings_ = fillWarnings(scene, fill, kFillVolumeWarning);
-  }
+  // Each fluid region's state of each material it holds, resolved once.
+  std::vector<std::vector<BackgroundState>> regionState(scene.geometry.size(), std::vector<BackgroundState>(nm));
+  for (const core::RegionSpec* reg : plan.fluid)
+    for (const core::FillSpec& f : reg->fill) {
+      const int r = scene.materialIndex(f.material);
+      if (st_.mat[r].external) continue;
+      BackgroundState& s = regionState[static_cast<std::size_t>(reg - scene.geometry.data())][r];
+      resolveState(*st_.mat[r].eos, *reg->pressure, reg->temperature, reg->density, &s.rho, &s.e);
+      s.set = true;
+    }
+  auto stateOf = [&](const core::RegionSpec* reg, int r) -> const BackgroundState& {
+    return regionState[static_cast<std::size_t>(reg - scene.geometry.data())][r];
+  };
 
-  // ---- the initial state, cell by cell (later regions override earlier ones)
+  // ---- the initial state, cell by cell: each fluid region's share of the cell (cellShares;
+  // later regions override earlier ones point by point) gives each fluid its volume fraction, mass,
+  // energy and momentum; the cell's pressure starts at the shares' mean (the equilibrium at the
+  // end of initialize() sets it where regions of different pressures share a cell).
   const double V = mesh_.cellVolume();
+  std::vector<RegionShare> shares;
   forEach(owned_, [&](int i, int j, int k) {
     const core::RealVect x{mesh_.cellCenter(0, i), dim > 1 ? mesh_.cellCenter(1, j) : 0.0,
                            dim > 2 ? mesh_.cellCenter(2, k) : 0.0};
     const CellCover cover = coverAt(plan, x, dim);
     requireCovered(plan, cover, i, j, k);
-    const core::RegionSpec* reg = cover.fluid;
     const bool inSolid = cover.inSolid;
+    const int ijk[3] = {i, j, k};
+    cellShares(plan, mesh_, ijk, cover, &shares);
+    const core::RealVect uCentre = cover.fluid ? cover.fluid->velocityAt(x) : core::RealVect{0, 0, 0};
 
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];
-      const core::RealVect u = reg ? reg->velocityAt(x) : core::RealVect{0, 0, 0};
-      for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
       if (m.external) {
+        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = uCentre[static_cast<std::size_t>(d)];
         m.mass(i, j, k) = 0;
-        m.spvol(i, j, k) = 1.0 / m.eos->densityFromPT(reg ? *reg->pressure : kReferencePressure, kReferenceTemperature);
+        m.spvol(i, j, k) =
+            1.0 / m.eos->densityFromPT(cover.fluid ? *cover.fluid->pressure : kReferencePressure, kReferenceTemperature);
         m.eint(i, j, k) = m.eos->cv() * kReferenceTemperature;
         continue;
       }
-      // A cell inside a solid still holds a trace of each fluid (volume fraction kTraceFraction at
-      // the background state): the equilibrium pressure of a cell the solid fills only partly
-      // (its surface layer) then has a root, and no fluid has zero mass anywhere.
-      double frac = inSolid ? kTraceFraction : 0.0, rho = bg[r].rho, e = bg[r].e;
-      if (reg)
-        for (const core::FillSpec& f : reg->fill)
-          if (f.material == m.name) {
-            if (inSolid) {  // the region's fluid, at its state: it fills the solid's free volume
+      if (inSolid) {
+        // A cell inside a solid still holds a trace of each fluid (volume fraction kTraceFraction
+        // at the background state; the region's fluids at its state): the equilibrium pressure of
+        // a cell the solid fills only partly (its surface layer) then has a root, and no fluid has
+        // zero mass anywhere. The region's fluids fill the solid's free volume later
+        // (fitFluidsToExternalVolume).
+        double rho = bg[r].rho, e = bg[r].e;
+        if (cover.fluid)
+          for (const core::FillSpec& f : cover.fluid->fill)
+            if (f.material == m.name) {
               if (coupledStart && f.volume_fraction > 0)
                 solidCellFluids_[static_cast<std::size_t>(owned_.index(i, j, k))] |= 1u << r;
-              resolveState(*m.eos, *reg->pressure, reg->temperature, reg->density, &rho, &e);
-              continue;
+              rho = stateOf(cover.fluid, r).rho;
+              e = stateOf(cover.fluid, r).e;
             }
-            frac = f.volume_fraction;
-            resolveState(*m.eos, *reg->pressure, reg->temperature, reg->density, &rho, &e);
+        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = uCentre[static_cast<std::size_t>(d)];
+        m.mass(i, j, k) = kTraceFraction * rho * V;
+        m.eint(i, j, k) = e;
+        m.spvol(i, j, k) = 1.0 / rho;
+        m.theta(i, j, k) = kTraceFraction;
+        continue;
+      }
+      double frac = 0, mass = 0, energy = 0, mom[3] = {0, 0, 0};
+      for (const RegionShare& s : shares) {
+        if (!s.region) continue;
+        for (const core::FillSpec& f : s.region->fill)
+          if (f.material == m.name && f.volume_fraction > 0) {
+            const BackgroundState& st = stateOf(s.region, r);
+            const double vf = s.share * f.volume_fraction, dm = vf * st.rho * V;
+            const core::RealVect u = s.region == cover.fluid ? uCentre : s.region->velocityAt(x);
+            frac += vf;
+            mass += dm;
+            energy += dm * st.e;
+            for (int d = 0; d < 3; ++d) mom[d] += dm * u[static_cast<std::size_t>(d)];
           }
-      m.mass(i, j, k) = frac * rho * V;
-      m.eint(i, j, k) = e;
-      m.spvol(i, j, k) = 1.0 / rho;
-      m.theta(i, j, k) = frac;
+      }
+      if (mass > 0 && shares.size() == 1) {  // one region: its state as it is
+        const BackgroundState& st = stateOf(shares[0].region, r);
+        const core::RealVect u = shares[0].region == cover.fluid ? uCentre : shares[0].region->velocityAt(x);
+        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
+        m.mass(i, j, k) = frac * st.rho * V;
+        m.eint(i, j, k) = st.e;
+        m.spvol(i, j, k) = 1.0 / st.rho;
+        m.theta(i, j, k) = frac;
+      } else if (mass > 0) {
+        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = mom[d] / mass;
+        m.mass(i, j, k) = mass;
+        m.eint(i, j, k) = energy / mass;
+        m.spvol(i, j, k) = frac * V / mass;
+        m.theta(i, j, k) = frac;
+      } else {  // absent here: volume fraction 0 at the centre region's state if it names it, else the background's
+        const BackgroundState* st = &bg[r];
+        if (cover.fluid)
+          for (const core::FillSpec& f : cover.fluid->fill)
+            if (f.material == m.name) st = &stateOf(cover.fluid, r);
+        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = uCentre[static_cast<std::size_t>(d)];
+        m.mass(i, j, k) = 0;
+        m.eint(i, j, k) = st->e;
+        m.spvol(i, j, k) = 1.0 / st->rho;
+        m.theta(i, j, k) = 0;
+      }
     }
-    st_.press(i, j, k) = reg ? *reg->pressure : plan.fluid.empty() ? kReferencePressure : *plan.fluid.front()->pressure;
+    double p = 0;
+    for (const RegionShare& s : shares)
+      if (s.region) p += s.share * *s.region->pressure;
+    st_.press(i, j, k) = cover.fluid ? (inSolid ? *cover.fluid->pressure : p)
+                                     : plan.fluid.empty() ? kReferencePressure : *plan.fluid.front()->pressure;
     if (coupledStart) initialPressure_(i, j, k) = st_.press(i, j, k);
   });
 

@@ -64,8 +64,6 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   core::Progress progress(log, comm, solver.time(), scene.time.end,
                           core::ProgressOptions{10.0, 0, scene.time.max_steps, solver.steps()});
   progress.start(scene.name, scene.mesh.describe(), comm.size());
-  if (comm.root())
-    for (const std::string& w : solver.geometryWarnings()) log << "warning: " << w << "\n";
   core::OutputSchedule outputs(scene.output.interval, scene.time.end);
   if (resumed)
     outputs.resume(resumed->get("run.outputs"));

@@ -105,20 +105,3 @@ TEST(IceBadInput, CavitationBelowTheStiffenedGasFloorAndWithTheSemiImplicitPress
   EXPECT_NE(m.find("unknown model 'cut_off'; valid: pressure_cutoff"), std::string::npos) << m;
 }
 
-// A fluid region fills the cells whose centre it holds: a face between two cell centres (or on
-// one) rounds to a whole cell, and the region's mass and energy with it (the underwater scenes'
-// charge, its faces on cell centres at 4 mm, held 25 % more products than its box). The solver
-// measures each region's cells against its shape and names the region in a warning.
-TEST(IceBadInput, AFluidRegionRoundedByTheCellsIsNamed) {
-  EXPECT_TRUE(ice::IceSolver(base(), test::comm()).geometryWarnings().empty());  // the contact on a cell face
-  const core::Scene s = test::shockTube(10, {1, 0, 1}, {0.125, 0, 0.1}, 0.55, 0.2);  // on a cell centre
-  const ice::IceSolver solver(s, test::comm());
-  const std::vector<std::string>& w = solver.geometryWarnings();
-  ASSERT_EQ(w.size(), 2u);
-  // The later region (right) wins the cell whose centre both hold: 0.5 of cells against 0.45.
-  EXPECT_NE(w[0].find("geometry.left: its cells hold 0.5 m^1 of fluid, its shape 0.55 m^1 (-9.091 %"), std::string::npos)
-      << w[0];
-  EXPECT_NE(w[1].find("geometry.right: its cells hold 0.5 m^1 of fluid, its shape 0.45 m^1 (+11.11 %"), std::string::npos)
-      << w[1];
-  EXPECT_NE(w[1].find("cell spacing 0.1 m"), std::string::npos) << w[1];
-}

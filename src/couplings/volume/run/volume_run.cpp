@@ -97,8 +97,6 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
                    scene.mesh.describe(), comm.size());
   if (sides.solid && comm.root())
     for (const std::string& w : sides.solid->solver().geometryWarnings()) log << "warning: " << w << "\n";
-  if (sides.fluid && comm.root())
-    for (const std::string& w : sides.fluid->solver().geometryWarnings()) log << "warning: " << w << "\n";
   std::vector<std::string> materials;  // output.fields: each side writes its part of the list
   for (const auto& m : scene.materials) materials.push_back(m.name);
   core::RunRecord record(scene, comm, both ? "mpmice" : sides.solid ? "mpm_solver" : "ice_solver", suffix);
