@@ -133,6 +133,9 @@ const ModelFamily& constitutiveModels() {
                 {required("plateau_stress", Range::positive(), "plateau (initial) yield stress sigma_p [Pa]"),
                  required("densification_strain", Range::positive(),
                           "densification strain eps_D = -(9 + alpha^2)/(3 alpha^2) ln(rho_foam/rho_solid)"),
+                 required("densified_bulk_modulus", Range::positive(),
+                          "bulk modulus K_s of the compacted foam (its cell walls' solid) [Pa], at V/V0 <= "
+                          "rho_foam/rho_solid"),
                  optional("plastic_poissons_ratio", 0, Range::open(-1.0, 0.5),
                           "plastic Poisson's ratio nu_p (sets alpha)"),
                  optional("hardening_gamma", 0, Range::nonNegative(), "linear hardening gamma [Pa]"),

@@ -110,6 +110,7 @@ const std::vector<Entry>& registry() {
          f.gamma = modelParam(s, "hardening_gamma", 0.0);
          f.alpha2 = modelParam(s, "hardening_alpha2", w);
          f.beta = modelParam(s, "hardening_beta", 1.0);
+         f.denseBulk = modelParam(s, "densified_bulk_modulus", w);
          return std::unique_ptr<ConstitutiveModel>(std::make_unique<CrushableFoam>(ElasticConstants::fromSpec(s, w), f));
        }},
   };

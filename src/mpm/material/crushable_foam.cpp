@@ -1,5 +1,6 @@
 #include "mpm/material/crushable_foam.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,15 +10,35 @@
 
 namespace mpmice::mpm {
 
-CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f) : ElasticWaveModel(c), f_(f) {
+CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f) : c_(c), f_(f) {
   if (!(f_.plateau > 0)) throw std::invalid_argument("crushable_foam: plateau_stress must be > 0");
   if (!(f_.densification > 0)) throw std::invalid_argument("crushable_foam: densification_strain must be > 0");
   if (!(f_.plasticPoisson > -1.0 && f_.plasticPoisson < 0.5))
     throw std::invalid_argument("crushable_foam: plastic_poissons_ratio must lie in (-1, 0.5), got " +
                                 std::to_string(f_.plasticPoisson));
   if (!(f_.beta > 0)) throw std::invalid_argument("crushable_foam: hardening_beta must be > 0");
+  if (!(f_.denseBulk > 0)) throw std::invalid_argument("crushable_foam: densified_bulk_modulus must be > 0");
   alpha_ = std::sqrt(9.0 * (1.0 - 2.0 * f_.plasticPoisson) / (2.0 * (1.0 + f_.plasticPoisson)));
   shape_ = 1.0 + alpha_ * alpha_ / 9.0;
+  denseJ_ = std::exp(-3.0 * alpha_ * alpha_ * f_.densification / (9.0 + alpha_ * alpha_));
+}
+
+double CrushableFoam::maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                     std::size_t* arg) const {
+  const double Mf = c_.pWaveModulus(), Ms = f_.denseBulk + 4.0 * c_.G / 3.0;
+  double cmax = 0;
+  if (arg) *arg = end;
+  for (std::size_t i = begin; i < end; ++i) {
+    double vv = 0;
+    for (int d = 0; d < dim; ++d) vv += p.v[d][i] * p.v[d][i];
+    const double M = p.vol[i] <= denseJ_ * p.vol0[i] ? Ms : Mf;
+    const double s = std::sqrt(M * p.vol[i] / p.mass[i]) + std::sqrt(vv);
+    if (s > cmax) {  // a NaN speed is passed over
+      cmax = s;
+      if (arg) *arg = i;
+    }
+  }
+  return cmax;
 }
 
 double CrushableFoam::flowStress(double e) const {
@@ -27,11 +48,27 @@ double CrushableFoam::flowStress(double e) const {
 
 void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const {
   const double K = c_.K, G = c_.G, a2 = alpha_ * alpha_;
+  // The largest eps_hat at which the flow stress is evaluated (Y is infinite at eps_D).
+  const double eCap = f_.densification * (1.0 - 1e-12);
   for (std::size_t i = begin; i < end; ++i) {
     const Sym3 s = loadStress(p, i);
+    const double e0 = p.eqps[i];
+    if (p.vol[i] <= denseJ_ * p.vol0[i]) {
+      // Compacted to the solid: the mean stress elastic with K_s, the deviator bounded by the flow
+      // stress reached (radial return, eps_hat grows by the deviatoric plastic strain).
+      ElasticTrial t = elasticTrial(loadL(p, i), s, f_.denseBulk, G, dt);
+      const double q = std::sqrt(1.5 * ddot(t.dev, t.dev)), Y = flowStress(std::min(e0, eCap));
+      if (q > Y) {
+        for (auto& c : t.dev) c *= Y / q;
+        p.eqps[i] = std::min(e0 + (q - Y) / (3.0 * G), eCap);
+      }
+      const Sym3 n = {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
+      p.work[i] += stressWork(s, n, t.D, p.vol[i], dt);
+      storeStress(p, i, n);
+      continue;
+    }
     ElasticTrial t = elasticTrial(loadL(p, i), s, K, G, dt);
     const double q = std::sqrt(1.5 * ddot(t.dev, t.dev));
-    const double e0 = p.eqps[i];
     const double Y0 = flowStress(e0);
     if ((q * q + a2 * t.mean * t.mean) / shape_ > Y0 * Y0) {
       // Return: with multiplier dl (= d eps_hat) and Y = Y(e0 + dl) the end state is

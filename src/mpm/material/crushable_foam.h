@@ -14,8 +14,20 @@
 /// Closed forms (verified in tests/unit/mpm/test_constitutive.cpp): uniaxial stress |sigma| =
 /// Y(|eps| - |sigma|/E); hydrostatic |sigma_m| = Y(eps_hat) sqrt(1 + alpha^2/9) / alpha with
 /// eps_hat = (|eps_v| - |sigma_m|/K) sqrt(1 + alpha^2/9) / alpha.
+/// Compaction to the solid (lock-up): eps_D is the crush that takes the foam to its cell walls'
+/// density, eps_D = -(9 + alpha^2)/(3 alpha^2) ln(rho_foam / rho_solid) (LS-DYNA's definition), so
+/// the foam is fully dense at the volume ratio J_d = rho_foam / rho_solid = exp(-3 alpha^2 eps_D /
+/// (9 + alpha^2)); uniaxial crush reaches it at eps_hat = eps_D, where Y is infinite. Other paths
+/// reach J_d with Y finite (hydrostatic crush at eps_hat = eps_D sqrt(1 + alpha^2/9) / alpha ...),
+/// and the surface alone let a confined foam under a water shock compact to J = 0.012, denser than
+/// aluminium. At J = V / V0 <= J_d the particle is the compacted solid: its mean stress elastic
+/// with the solid's bulk modulus K_s (`densified_bulk_modulus`; no further volumetric plastic flow),
+/// its deviator elastic with G and bounded by the flow stress it reached (J2 radial return), and
+/// its CFL wave speed sqrt((K_s + 4 G / 3) / rho). Closed form past J_d (hydrostatic): p = p(J_d) +
+/// K_s ln(J_d / J).
 /// Scene: `model: {type: crushable_foam, youngs_modulus, poissons_ratio, plateau_stress,
-/// densification_strain, plastic_poissons_ratio, hardening_gamma, hardening_alpha2, hardening_beta}`.
+/// densification_strain, densified_bulk_modulus, plastic_poissons_ratio, hardening_gamma,
+/// hardening_alpha2, hardening_beta}`.
 #include "mpm/material/constitutive_model.h"
 
 namespace mpmice::mpm {
@@ -27,22 +39,33 @@ struct CrushableFoamParams {
   double gamma = 0;          // [Pa]
   double alpha2 = 0;         // [Pa]
   double beta = 1;
+  double denseBulk = 0;       // K_s [Pa], the compacted solid's bulk modulus
 };
 
-class CrushableFoam final : public ElasticWaveModel {
+class CrushableFoam final : public ConstitutiveModel {
  public:
   CrushableFoam(const ElasticConstants& c, const CrushableFoamParams& f);
   [[nodiscard]] const char* name() const override { return "crushable_foam"; }
   [[nodiscard]] bool plasticHistory() const override { return true; }
   void updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const override;
+  /// The uncompacted foam's P-wave speed (the model does not know the density it starts at; the
+  /// step's signal speed, maxSignalSpeed, takes each particle's own state).
+  [[nodiscard]] double waveSpeed(double rho) const override { return c_.pWaveSpeed(rho); }
+  /// max over particles of sqrt(M / (m / V)) + |v|, M = K + 4 G / 3, or K_s + 4 G / 3 once compacted.
+  [[nodiscard]] double maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
+                                      std::size_t* arg = nullptr) const override;
+  /// The volume ratio V / V0 at which the foam is fully dense.
+  [[nodiscard]] double denseVolumeRatio() const { return denseJ_; }
   /// Flow stress Y at eps_hat (< eps_D).
   [[nodiscard]] double flowStress(double epsHat) const;
   /// The yield surface's shape factor alpha.
   [[nodiscard]] double alpha() const { return alpha_; }
 
  private:
+  ElasticConstants c_;
   CrushableFoamParams f_;
   double alpha_ = 0, shape_ = 1;  // shape_ = 1 + (alpha/3)^2
+  double denseJ_ = 0;             // J_d
 };
 
 }  // namespace mpmice::mpm

@@ -337,7 +337,7 @@ mesh: {dim: 2, lower: [0, 0], upper: [1, 1], spacing: 0.05}
 time: {end: 1e-3}
 materials:
   - {name: foam, kind: solid, density: 270, model: {type: crushable_foam, youngs_modulus: 1e8, poissons_ratio: 0.05,
-     plateau_stress: 1.5e6, densification_strain: 2.3, hardening_alpha2: 4e6}}
+     plateau_stress: 1.5e6, densification_strain: 2.3, hardening_alpha2: 4e6, densified_bulk_modulus: 76e9}}
   - {name: polymer, kind: solid, density: 1200, model: {type: cowper_symonds, youngs_modulus: 2e9, poissons_ratio: 0.35,
      yield_stress: 40e6, rate_c: 100, rate_p: 4}}
 geometry:
