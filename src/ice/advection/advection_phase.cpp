@@ -373,7 +373,7 @@ void IceSolver::advectFluids() {
     // The fallback guards the thermal energy e - e_cold(rho) (the health check's cv T), not e: a
     // Mie-Gruneisen liquid with a reference temperature has e = 0 at T0 (e_cold = -cv T0) and moves
     // through e = 0 at ~T0 (docs/ice.md "Health check"). Only EOS with a cold energy make the call.
-    const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+    const bool cold = m.eos->hasColdEnergy();
     auto cell = [&](std::int64_t c) {
       const double mass = a[kMass][c];
       // Absent: traces below kTraceMass kg, or below kNegligibleMassFraction of the cell's fluid
@@ -1075,7 +1075,7 @@ void IceSolver::advectFluids() {
       };
       const double* ms = m.mass.data();
       const double* vL = m.lagSpvol().data();
-      const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+      const bool cold = m.eos->hasColdEnergy();
       adv_.blends.clear();
       adv_.lagKept.clear();
       // Saves the Lagrangian values of stored cell c (in the window) for after its slab leaves it.

@@ -7,7 +7,8 @@
 /// virtual call per cell. Quantities: rho = material (micro) density, e = specific internal
 /// energy, p = pressure. density() inverts pressure() at fixed e and returns rho <= 0 where p
 /// lies below the range the EOS can reach (the equilibrium-pressure bracket uses that).
-/// Temperature: T = (e - e_cold(rho)) / cv, where e_cold is zero except for stiffened gas.
+/// Temperature: T = (e - e_cold(rho)) / cv; e_cold is zero for the ideal gas (stiffened gas: p_inf / rho;
+/// Mie-Grueneisen: -cv T0; JWL: the energy of its exponential cold terms).
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -39,6 +40,8 @@ class Eos {
   virtual void pressureFloor(std::size_t n, const double* e, double* pmin) const;
   /// Part of e that does not depend on temperature (e = cv T + coldEnergy(rho)).
   [[nodiscard]] virtual double coldEnergy(double /*rho*/) const { return 0.0; }
+  /// Whether coldEnergy is not identically zero (the thermal-energy guards then subtract it).
+  [[nodiscard]] virtual bool hasColdEnergy() const { return false; }
 
   /// Cavitation (docs/ice.md "Cavitation", a fluid's `cavitation: {model: pressure_cutoff}`): the
   /// cut-off p_c below which the liquid's pressure does not fall (-inf: none). The law above is

@@ -21,6 +21,11 @@ void Jwl::eval(double rho, double e, double* p, double* dpdrho) const {
   *dpdrho = dpc + w_ * e;
 }
 
+double Jwl::coldEnergy(double rho) const {
+  const double V = rho0_ / rho;
+  return A_ / (R1_ * rho0_) * std::exp(-R1_ * V) + B_ / (R2_ * rho0_) * std::exp(-R2_ * V);
+}
+
 double Jwl::internalEnergy(double rho, double p) const {
   double pc, dpc;
   cold(rho, &pc, &dpc);

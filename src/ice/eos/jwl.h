@@ -1,7 +1,13 @@
 #pragma once
 /// @brief Jones-Wilkins-Lee EOS of detonation products (scene name `jwl`; parameters `A`, `B`,
 /// `R1`, `R2`, `omega`, `reference_density` rho0). With V = rho0 / rho:
-///   p = A (1 - omega/(R1 V)) exp(-R1 V) + B (1 - omega/(R2 V)) exp(-R2 V) + omega rho e.
+///   p = A (1 - omega/(R1 V)) exp(-R1 V) + B (1 - omega/(R2 V)) exp(-R2 V) + omega rho e
+///     = p_c(V) + omega rho (e - e_c(V)),   p_c = A exp(-R1 V) + B exp(-R2 V),
+///   e_c = A / (R1 rho0) exp(-R1 V) + B / (R2 rho0) exp(-R2 V)   (de_c / dv = -p_c: the cold curve).
+/// Temperature T = (e - e_c) / cv (as Uintah's JWL): along an isentrope e - e_c falls as v^-omega and
+/// stays positive, and a state below the cold curve (p < p_c at its density) is below 0 K; with
+/// T = e / cv such a state, e.g. 12 GPa at 1770 kg/m^3 for the PETN set (p_c 12.67 GPa), started and
+/// reached T < 0 within microseconds of expansion (e_c -> 0).
 /// Inverse by safeguarded Newton.
 #include <algorithm>
 #include <limits>
@@ -29,6 +35,8 @@ class Jwl final : public EvalEos<Jwl> {
   }
   [[nodiscard]] double soundSpeed2At(double rho, double p, double dpdrho) const { return dpdrho + p * w_ / rho; }
   [[nodiscard]] double internalEnergy(double rho, double p) const override;
+  [[nodiscard]] double coldEnergy(double rho) const override;
+  [[nodiscard]] bool hasColdEnergy() const override { return A_ != 0.0 || B_ != 0.0; }
   /// p(rho, e) and dp/drho at fixed e.
   void eval(double rho, double e, double* p, double* dpdrho) const;
   /// The e-independent part of p (the two exponential terms) and its rho-derivative.

@@ -34,6 +34,7 @@ class MieGruneisen final : public EvalEos<MieGruneisen> {
   [[nodiscard]] double internalEnergy(double rho, double p) const override;
   /// -cv T0: the reference state (e = 0) is at T0, not at 0 K.
   [[nodiscard]] double coldEnergy(double /*rho*/) const override { return -cv() * t0_; }
+  [[nodiscard]] bool hasColdEnergy() const override { return t0_ != 0.0; }
   /// p(rho, e) and dp/drho at fixed e.
   void eval(double rho, double e, double* p, double* dpdrho) const;
 

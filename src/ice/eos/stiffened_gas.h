@@ -37,6 +37,7 @@ class StiffenedGas final : public Eos {
     return (p + g_ * pinf_) / ((g_ - 1.0) * rho);
   }
   [[nodiscard]] double coldEnergy(double rho) const override { return pinf_ / rho; }
+  [[nodiscard]] bool hasColdEnergy() const override { return pinf_ != 0.0; }
   [[nodiscard]] double gamma() const { return g_; }
   [[nodiscard]] double pInf() const { return pinf_; }
 

@@ -76,7 +76,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       // e - e_cold is not taken (the Lagrangian energy fix's guard): the rule moves temperature
       // changes, and a trace the ratchet above has already cooled towards 0 K would be taken below
       // it by a solid's small cooling (a buffer gas in a filled lattice's polymer, docs/slides.md).
-      const double ec = m.eos->coldEnergy(1.0) != 0.0 ? m.eos->coldEnergy(1.0 / m.lagSpvol().data()[c]) : 0.0;
+      const double ec = m.eos->hasColdEnergy() ? m.eos->coldEnergy(1.0 / m.lagSpvol().data()[c]) : 0.0;
       if (e - ec > 0 && e + de - ec < kMinEnergyShare * (e - ec)) continue;
       e += de;
       Q += mass * de;

@@ -89,7 +89,7 @@ bool rowOk(const IceState& st, std::int64_t c0, int n, int dim, std::vector<doub
     const double cvTmax = m.eos->cv() * core::kMaxTemperature;
     // T = (e - e_cold(rho)) / cv. Only stiffened gas has a cold energy (eos.h): the others skip
     // its virtual call per cell.
-    const bool cold = m.eos->coldEnergy(1.0) != 0.0;
+    const bool cold = m.eos->hasColdEnergy();
     // Cold: the EOS has a cold energy (a virtual call per cell); without it (no call) the loop vectorises.
     auto cells = [&]<bool Cold>() {
       int good = 1;

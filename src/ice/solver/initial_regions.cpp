@@ -75,7 +75,7 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
     }
     // Each fluid's start state in this region lies above 0 K: a pressure below a JWL products'
     // or a stiffened gas's cold curve at the given density gives e below the cold energy, which
-    // the first steps found (products at -11708 K named in a cell of the foam beside them).
+    // the first steps found (products at -11708 K, by e / cv, named in a cell of the foam beside them).
     for (const core::FillSpec& f : reg.fill) {
       const int r = scene.materialIndex(f.material);
       if (external(r) || !(f.volume_fraction > 0)) continue;

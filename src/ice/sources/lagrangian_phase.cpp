@@ -62,7 +62,7 @@ void IceSolver::computeSourcesAndLagrangian() {
               m.external ? m.couplingWork.data() : nullptr,
               m.external && m.volumeChangeGiven ? m.volumeChange.data() : nullptr,
               m.external ? m.dEnergy.data() : nullptr, m.eos.get(),
-              m.eos->coldEnergy(1.0) != 0.0};
+              m.eos->hasColdEnergy()};
   }
   const double* press = st_.press.data();
   // Per direction: the face volume fluxes (their face box, the stride to the face above a cell,
