@@ -46,77 +46,92 @@ double CrushableFoam::flowStress(double e) const {
   return f_.plateau + f_.gamma * x - f_.alpha2 * std::log1p(-std::pow(x, f_.beta));
 }
 
+Sym3 CrushableFoam::denseUpdate(const Mat3& L, const Sym3& s, double dt, double* eqps) const {
+  // Compacted to the solid: the mean stress elastic with K_s, the deviator bounded by the flow stress
+  // reached (radial return; eps_hat grows by the deviatoric plastic strain, short of eps_D).
+  const double G = c_.G, eCap = f_.densification * (1.0 - 1e-12), e0 = *eqps;
+  ElasticTrial t = elasticTrial(L, s, f_.denseBulk, G, dt);
+  const double q = std::sqrt(1.5 * ddot(t.dev, t.dev)), Y = flowStress(std::min(e0, eCap));
+  if (q > Y) {
+    for (auto& c : t.dev) c *= Y / q;
+    *eqps = std::min(e0 + (q - Y) / (3.0 * G), eCap);
+  }
+  return {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
+}
+
+Sym3 CrushableFoam::foamUpdate(const Mat3& L, const Sym3& s, double dt, double* eqps) const {
+  const double K = c_.K, G = c_.G, a2 = alpha_ * alpha_, e0 = *eqps;
+  ElasticTrial t = elasticTrial(L, s, K, G, dt);
+  const double q = std::sqrt(1.5 * ddot(t.dev, t.dev));
+  const double Y0 = flowStress(e0);
+  if ((q * q + a2 * t.mean * t.mean) / shape_ > Y0 * Y0) {
+    // Return: with multiplier dl (= d eps_hat) and Y = Y(e0 + dl) the end state is
+    // q = q_tr / (1 + 3 G dl / (Y c)), sigma_m = sigma_m_tr / (1 + K alpha^2 dl / (Y c)), and the
+    // consistency condition r(dl) = sqrt((q^2 + alpha^2 sigma_m^2) / c) - Y = 0, r(0) > 0 and
+    // r -> -infinity below eps_D - e0: bisection-safeguarded secant on that bracket.
+    auto residual = [&](double dl) {
+      const double Y = flowStress(e0 + dl);
+      const double qq = q / (1.0 + 3.0 * G * dl / (Y * shape_));
+      const double mm = t.mean / (1.0 + K * a2 * dl / (Y * shape_));
+      return std::sqrt((qq * qq + a2 * mm * mm) / shape_) - Y;
+    };
+    // The upper end: closer and closer below eps_D until r < 0 (the densification singularity,
+    // alpha_2 > 0, guarantees it); a trial beyond even that leaves the state at the last one.
+    const double room = f_.densification - e0;
+    double lo = 0, rlo = residual(0.0), hi = room * (1.0 - 1e-3), rhi = residual(hi);
+    for (double gap = 1e-6; rhi > 0 && gap > 1e-16; gap *= 1e-3) {
+      lo = hi;
+      rlo = rhi;
+      hi = room * (1.0 - gap);
+      rhi = residual(hi);
+    }
+    for (int it = 0; it < kFoamReturnMaxIterations && hi - lo > kFoamReturnTolerance * (e0 + hi); ++it) {
+      double mid = rhi < 0 && rlo > 0 ? lo + (hi - lo) * rlo / (rlo - rhi) : 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi) || it % 3 == 2) mid = 0.5 * (lo + hi);  // keep the bracket shrinking
+      const double r = residual(mid);
+      if (r > 0) {
+        lo = mid;
+        rlo = r;
+      } else {
+        hi = mid;
+        rhi = r;
+      }
+      if (std::fabs(r) <= kFoamReturnTolerance * flowStress(e0 + mid)) {
+        lo = hi = mid;
+        break;
+      }
+    }
+    const double dl = 0.5 * (lo + hi);
+    const double Y = flowStress(e0 + dl);
+    const double sd = 1.0 / (1.0 + 3.0 * G * dl / (Y * shape_));
+    for (auto& c : t.dev) c *= sd;
+    t.mean /= 1.0 + K * a2 * dl / (Y * shape_);
+    *eqps = e0 + dl;
+  }
+  return {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
+}
+
 void CrushableFoam::updateStress(ParticleSet& p, std::size_t begin, std::size_t end, double dt) const {
-  const double K = c_.K, G = c_.G, a2 = alpha_ * alpha_;
-  // The largest eps_hat at which the flow stress is evaluated (Y is infinite at eps_D).
-  const double eCap = f_.densification * (1.0 - 1e-12);
+  const double lnJd = std::log(denseJ_);
   for (std::size_t i = begin; i < end; ++i) {
     const Sym3 s = loadStress(p, i);
-    const double e0 = p.eqps[i];
-    if (p.vol[i] <= denseJ_ * p.vol0[i]) {
-      // Compacted to the solid: the mean stress elastic with K_s, the deviator bounded by the flow
-      // stress reached (radial return, eps_hat grows by the deviatoric plastic strain).
-      ElasticTrial t = elasticTrial(loadL(p, i), s, f_.denseBulk, G, dt);
-      const double q = std::sqrt(1.5 * ddot(t.dev, t.dev)), Y = flowStress(std::min(e0, eCap));
-      if (q > Y) {
-        for (auto& c : t.dev) c *= Y / q;
-        p.eqps[i] = std::min(e0 + (q - Y) / (3.0 * G), eCap);
-      }
-      const Sym3 n = {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
-      p.work[i] += stressWork(s, n, t.D, p.vol[i], dt);
-      storeStress(p, i, n);
-      continue;
+    const Mat3 L = loadL(p, i);
+    const Sym3 D = symPart(L);
+    // ln J at the step's end and (by the step's volumetric strain) at its start: a step that
+    // crosses full density is split there, the foam's law before and the solid's after (or back).
+    const double lnJ = std::log(p.vol[i] / p.vol0[i]), dlnJ = trace(D) * dt, lnJ0 = lnJ - dlnJ;
+    const bool dense = lnJ <= lnJd, wasDense = lnJ0 <= lnJd;
+    double e = p.eqps[i];
+    Sym3 n;
+    if (dense == wasDense || dlnJ == 0.0) {
+      n = dense ? denseUpdate(L, s, dt, &e) : foamUpdate(L, s, dt, &e);
+    } else {
+      const double f = std::clamp((lnJd - lnJ0) / dlnJ, 0.0, 1.0);  // the share before the crossing
+      const Sym3 mid = wasDense ? denseUpdate(L, s, f * dt, &e) : foamUpdate(L, s, f * dt, &e);
+      n = dense ? denseUpdate(L, mid, (1.0 - f) * dt, &e) : foamUpdate(L, mid, (1.0 - f) * dt, &e);
     }
-    ElasticTrial t = elasticTrial(loadL(p, i), s, K, G, dt);
-    const double q = std::sqrt(1.5 * ddot(t.dev, t.dev));
-    const double Y0 = flowStress(e0);
-    if ((q * q + a2 * t.mean * t.mean) / shape_ > Y0 * Y0) {
-      // Return: with multiplier dl (= d eps_hat) and Y = Y(e0 + dl) the end state is
-      // q = q_tr / (1 + 3 G dl / (Y c)), sigma_m = sigma_m_tr / (1 + K alpha^2 dl / (Y c)), and the
-      // consistency condition r(dl) = sqrt((q^2 + alpha^2 sigma_m^2) / c) - Y = 0, r(0) > 0 and
-      // r -> -infinity below eps_D - e0: bisection-safeguarded secant on that bracket.
-      auto residual = [&](double dl) {
-        const double Y = flowStress(e0 + dl);
-        const double qq = q / (1.0 + 3.0 * G * dl / (Y * shape_));
-        const double mm = t.mean / (1.0 + K * a2 * dl / (Y * shape_));
-        return std::sqrt((qq * qq + a2 * mm * mm) / shape_) - Y;
-      };
-      // The upper end: closer and closer below eps_D until r < 0 (the densification singularity,
-      // alpha_2 > 0, guarantees it); a trial beyond even that leaves the state at the last one.
-      const double room = f_.densification - e0;
-      double lo = 0, rlo = residual(0.0), hi = room * (1.0 - 1e-3), rhi = residual(hi);
-      for (double gap = 1e-6; rhi > 0 && gap > 1e-16; gap *= 1e-3) {
-        lo = hi;
-        rlo = rhi;
-        hi = room * (1.0 - gap);
-        rhi = residual(hi);
-      }
-      double dl = hi;
-      for (int it = 0; it < kFoamReturnMaxIterations && hi - lo > kFoamReturnTolerance * (e0 + hi); ++it) {
-        double mid = rhi < 0 && rlo > 0 ? lo + (hi - lo) * rlo / (rlo - rhi) : 0.5 * (lo + hi);
-        if (!(mid > lo && mid < hi) || it % 3 == 2) mid = 0.5 * (lo + hi);  // keep the bracket shrinking
-        const double r = residual(mid);
-        if (r > 0) {
-          lo = mid;
-          rlo = r;
-        } else {
-          hi = mid;
-          rhi = r;
-        }
-        if (std::fabs(r) <= kFoamReturnTolerance * flowStress(e0 + mid)) {
-          lo = hi = mid;
-          break;
-        }
-      }
-      dl = 0.5 * (lo + hi);
-      const double Y = flowStress(e0 + dl);
-      const double sd = 1.0 / (1.0 + 3.0 * G * dl / (Y * shape_));
-      for (auto& c : t.dev) c *= sd;
-      t.mean /= 1.0 + K * a2 * dl / (Y * shape_);
-      p.eqps[i] = e0 + dl;
-    }
-    const Sym3 n = {t.dev[0] + t.mean, t.dev[1] + t.mean, t.dev[2] + t.mean, t.dev[3], t.dev[4], t.dev[5]};
-    p.work[i] += stressWork(s, n, t.D, p.vol[i], dt);
+    p.eqps[i] = e;
+    p.work[i] += stressWork(s, n, D, p.vol[i], dt);
     storeStress(p, i, n);
   }
 }

@@ -23,12 +23,13 @@
 /// aluminium. At J = V / V0 <= J_d the particle is the compacted solid: its mean stress elastic
 /// with the solid's bulk modulus K_s (`densified_bulk_modulus`; no further volumetric plastic flow),
 /// its deviator elastic with G and bounded by the flow stress it reached (J2 radial return), and
-/// its CFL wave speed sqrt((K_s + 4 G / 3) / rho). Closed form past J_d (hydrostatic): p = p(J_d) +
-/// K_s ln(J_d / J).
+/// its CFL wave speed sqrt((K_s + 4 G / 3) / rho). A step that crosses J_d is split there (its
+/// volumetric strain tr D dt). Closed form past J_d (hydrostatic): p = p(J_d) + K_s ln(J_d / J).
 /// Scene: `model: {type: crushable_foam, youngs_modulus, poissons_ratio, plateau_stress,
 /// densification_strain, densified_bulk_modulus, plastic_poissons_ratio, hardening_gamma,
 /// hardening_alpha2, hardening_beta}`.
 #include "mpm/material/constitutive_model.h"
+#include "mpm/material/tensor.h"
 
 namespace mpmice::mpm {
 
@@ -62,6 +63,11 @@ class CrushableFoam final : public ConstitutiveModel {
   [[nodiscard]] double alpha() const { return alpha_; }
 
  private:
+  /// One step of the foam's law (Deshpande-Fleck return) and of the compacted solid's, from stress
+  /// s over dt with velocity gradient L; *eqps in and out.
+  [[nodiscard]] Sym3 foamUpdate(const Mat3& L, const Sym3& s, double dt, double* eqps) const;
+  [[nodiscard]] Sym3 denseUpdate(const Mat3& L, const Sym3& s, double dt, double* eqps) const;
+
   ElasticConstants c_;
   CrushableFoamParams f_;
   double alpha_ = 0, shape_ = 1;  // shape_ = 1 + (alpha/3)^2
