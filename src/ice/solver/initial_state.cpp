@@ -195,6 +195,8 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
         m.theta(i, j, k) = kTraceFraction;
         continue;
       }
+      // The regions' sums (volume fraction, mass, energy, momentum); a cell of one region takes its
+      // state as it is (bit for bit the whole-cell fill), a shared cell the sums' means.
       double frac = 0, mass = 0, energy = 0, mom[3] = {0, 0, 0};
       for (const RegionShare& s : shares) {
         if (!s.region) continue;
@@ -209,31 +211,27 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
             for (int d = 0; d < 3; ++d) mom[d] += dm * u[static_cast<std::size_t>(d)];
           }
       }
-      if (mass > 0 && shares.size() == 1) {  // one region: its state as it is
+      core::RealVect u = uCentre;
+      double v, e;  // specific volume, specific energy
+      if (mass > 0 && shares.size() == 1) {
         const BackgroundState& st = stateOf(shares[0].region, r);
-        const core::RealVect u = shares[0].region == cover.fluid ? uCentre : shares[0].region->velocityAt(x);
-        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
-        m.mass(i, j, k) = frac * st.rho * V;
-        m.eint(i, j, k) = st.e;
-        m.spvol(i, j, k) = 1.0 / st.rho;
-        m.theta(i, j, k) = frac;
+        if (shares[0].region != cover.fluid) u = shares[0].region->velocityAt(x);
+        v = 1.0 / st.rho, e = st.e, mass = frac * st.rho * V;
       } else if (mass > 0) {
-        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = mom[d] / mass;
-        m.mass(i, j, k) = mass;
-        m.eint(i, j, k) = energy / mass;
-        m.spvol(i, j, k) = frac * V / mass;
-        m.theta(i, j, k) = frac;
+        for (int d = 0; d < 3; ++d) u[static_cast<std::size_t>(d)] = mom[d] / mass;
+        v = frac * V / mass, e = energy / mass;
       } else {  // absent here: volume fraction 0 at the centre region's state if it names it, else the background's
         const BackgroundState* st = &bg[r];
         if (cover.fluid)
           for (const core::FillSpec& f : cover.fluid->fill)
             if (f.material == m.name) st = &stateOf(cover.fluid, r);
-        for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = uCentre[static_cast<std::size_t>(d)];
-        m.mass(i, j, k) = 0;
-        m.eint(i, j, k) = st->e;
-        m.spvol(i, j, k) = 1.0 / st->rho;
-        m.theta(i, j, k) = 0;
+        v = 1.0 / st->rho, e = st->e;
       }
+      for (int d = 0; d < m.vel.ncomp(); ++d) m.vel(i, j, k, d) = u[static_cast<std::size_t>(d)];
+      m.mass(i, j, k) = mass;
+      m.eint(i, j, k) = e;
+      m.spvol(i, j, k) = v;
+      m.theta(i, j, k) = frac;
     }
     double p = 0;
     for (const RegionShare& s : shares)
