@@ -195,8 +195,11 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
         m.theta(i, j, k) = kTraceFraction;
         continue;
       }
-      // The regions' sums (volume fraction, mass, energy, momentum); a cell of one region takes its
-      // state as it is (bit for bit the whole-cell fill), a shared cell the sums' means.
+      // The regions' sums (volume fraction, mass, total energy, momentum); a cell of one region takes
+      // its state as it is (bit for bit the whole-cell fill), a shared cell the sums' means: it moves
+      // at the mass-weighted velocity, and the kinetic energy that velocity does not carry (regions
+      // moving differently) is its internal energy, as when the streams mix; the cell holds the
+      // drawn total energy.
       double frac = 0, mass = 0, energy = 0, mom[3] = {0, 0, 0};
       for (const RegionShare& s : shares) {
         if (!s.region) continue;
@@ -207,7 +210,7 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
             const core::RealVect u = s.region == cover.fluid ? uCentre : s.region->velocityAt(x);
             frac += vf;
             mass += dm;
-            energy += dm * st.e;
+            energy += dm * (st.e + 0.5 * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
             for (int d = 0; d < 3; ++d) mom[d] += dm * u[static_cast<std::size_t>(d)];
           }
       }
@@ -219,7 +222,7 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
         v = 1.0 / st.rho, e = st.e, mass = frac * st.rho * V;
       } else if (mass > 0) {
         for (int d = 0; d < 3; ++d) u[static_cast<std::size_t>(d)] = mom[d] / mass;
-        v = frac * V / mass, e = energy / mass;
+        v = frac * V / mass, e = energy / mass - 0.5 * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
       } else {  // absent here: volume fraction 0 at the centre region's state if it names it, else the background's
         const BackgroundState* st = &bg[r];
         if (cover.fluid)

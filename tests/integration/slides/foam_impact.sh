@@ -7,13 +7,15 @@
 # of the compacted layer, now less than a cell thick, overcompressed by the grid's velocity); the
 # plate is thrown back (its mean velocity upward at the end). Without the lock-up (K_s = the foam's
 # 37 MPa) the layer's mean V/V0 went to 0.063 and a particle's to 0.022.
-#   foam_impact.sh SOURCE_DIR BUILD_DIR
+# A third argument names another scene of the same plate and layer (foam_impact_3d.yaml: the 3D
+# model between symmetry planes, the same bounds).
+#   foam_impact.sh SOURCE_DIR BUILD_DIR [SCENE]
 set -euo pipefail
-src=$1 build=$2
+src=$1 build=$2 scene=${3:-foam_impact.yaml}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-"$build/mpm_solver/mpm_solver" "$src/tests/integration/slides/foam_impact.yaml" > run.log 2>&1 ||
+"$build/mpm_solver/mpm_solver" "$src/tests/integration/slides/$scene" > run.log 2>&1 ||
   { tail -n 20 run.log; echo "FAIL: mpm_solver"; exit 1; }
 grep -q "done: .* t = 6.000e-05 s" run.log || { tail -n 5 run.log; echo "FAIL: the run did not reach 60 us"; exit 1; }
 "$src/scripts/python" - out <<'PY'

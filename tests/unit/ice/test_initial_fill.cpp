@@ -96,3 +96,26 @@ TEST(IceInitialFill, ADiskHoldsItsAreaOnACoarseMesh) {
   const ice::IceSolver sol(s, test::comm());
   EXPECT_NEAR(sumOver(sol, 1, true) / (M_PI * 0.09), 1.0, 0.01);
 }
+
+TEST(IceInitialFill, ASharedCellKeepsTheRegionsMomentumAndTotalEnergy) {
+  // One gas: at rest, 1.2 kg/m^3 on [0, 1]; a jet of it at 100 m/s, 8 kg/m^3 on [0.225, 0.6125],
+  // both at 1e5 Pa. The faces fall between sub-cell samples, so the shares are exact (cell 2: 3/4
+  // jet, cell 6: 1/8): the cells hold the drawn mass, momentum and total energy (the kinetic
+  // energy the mass-weighted velocity of a shared cell does not carry is its internal energy,
+  // as when the two streams mix), and a shared cell moves at the mass-weighted velocity.
+  core::Scene s = twoGases(10, 0.225, 0.6125);
+  s.materials = {test::idealGas("gas")};
+  s.geometry[0].fill = {{"gas", 1.0}};
+  s.geometry[1].fill = {{"gas", 1.0}};
+  s.geometry[1].velocity = {100, 0, 0};
+  const ice::IceSolver sol(s, test::comm());
+  const ice::Totals t = sol.totals();
+  const double L = 0.6125 - 0.225;
+  EXPECT_NEAR(t.mass, 1.2 * (1 - L) + 8.0 * L, 1e-12);
+  EXPECT_NEAR(t.momentum[0], 8.0 * L * 100.0, 1e-9);
+  EXPECT_NEAR(t.energy, 1e5 / 0.4 + 0.5 * 8.0 * L * 1e4, 1e-6);
+  if (sol.ownedBox().contains(2, 0, 0)) {
+    const double mj = 8.0 * 0.75, mr = 1.2 * 0.25;
+    EXPECT_NEAR(sol.state().mat[0].vel(2, 0, 0, 0), 100.0 * mj / (mj + mr), 1e-9);
+  }
+}
