@@ -112,8 +112,13 @@ def scene(model, end, full=False, dim=2, tube=False):
     return s
 
 
+FOAM_EOS = None   # --foam-eos: the crushable foams' solid EOS for ICE (None: the scene's, solid_bulk)
+
+
 def foam_material(s, model):
     mat = next(m for m in s["materials"] if m["name"] == "foam")
+    if FOAM_EOS and model != "water":
+        mat["eos"] = {"type": FOAM_EOS}
     if model == "water":
         mat["density"] = 270.0 + 0.9 * 1000.0
         k_water, nu = 2.2e9, 0.49
@@ -172,7 +177,12 @@ def main():
     ap.add_argument("--tube", action="store_true",
                     help="with --full: the scene with the slides' PVC tube (configs/underwater_tube_2d.yaml), the tube "
                          "kept; scenes and output files get a _tube suffix")
+    ap.add_argument("--foam-eos", choices=["solid_bulk", "crush_curve"], default=None,
+                    help="the air-filled and strengthless foams' solid EOS for ICE (default: the scene's, solid_bulk); "
+                         "crush_curve: the foam's own crush curve (docs/slides.md \"ICE's view of the foam\")")
     args = ap.parse_args()
+    global FOAM_EOS
+    FOAM_EOS = args.foam_eos
     if args.tube and (not args.full or args.dim == 3):
         ap.error("--tube needs --full (the tube's scene, configs/underwater_tube_2d.yaml, is 2D at the shipped depth)")
     tube = "_tube" if args.tube else ""

@@ -187,9 +187,31 @@ const ModelFamily& solidEquationsOfState() {
             derived("reference_density", Range::positive(),
                     "rho0 [kg/m^3] (default: the material density)")},
            {}},
+          {"crush_curve",
+           "a crushable foam's hydrostatic crush curve: elastic with K to the plateau, the model's hardening "
+           "to full density V/V0 = J_d, then the compacted solid's bulk modulus; solid_bulk's tension branch "
+           "below the threshold pressure (crushable_foam solids only; "
+           "src/core/material/foam_crush_curve.h)",
+           {derived("bulk_modulus", Range::positive(), "bulk modulus K [Pa] (default: the model's)"),
+            optional("threshold_pressure", 101325.0, Range::positive(),
+                     "pressure at which the foam is stress-free; the tension branch below it [Pa]"),
+            derived("reference_density", Range::positive(), "rho0 [kg/m^3] (default: the material density)"),
+            derived("plateau_stress", Range::positive(), "sigma_p [Pa] (default: the model's)"),
+            derived("densification_strain", Range::positive(), "eps_D (default: the model's)"),
+            derived("plastic_poissons_ratio", Range::open(-1.0, 0.5), "nu_p (default: the model's)"),
+            derived("hardening_gamma", Range::nonNegative(), "gamma [Pa] (default: the model's)"),
+            derived("hardening_alpha2", Range::nonNegative(), "alpha_2 [Pa] (default: the model's)"),
+            derived("hardening_beta", Range::positive(), "beta (default: the model's)"),
+            derived("densified_bulk_modulus", Range::positive(), "K_s [Pa] (default: the model's)")},
+           {}},
       }};
   return f;
 }
+
+/// The crushable_foam keys a crush_curve EOS takes from the solid's model when the scene leaves them out.
+const char* const kCrushCurveKeys[] = {"plateau_stress",  "densification_strain", "plastic_poissons_ratio",
+                                       "hardening_gamma", "hardening_alpha2",     "hardening_beta",
+                                       "densified_bulk_modulus"};
 
 const ModelFamily& cavitationModels() {
   static const ModelFamily f{
@@ -245,6 +267,9 @@ void completeSolidEos(ModelSpec& eos, const ModelSpec& constitutive, double dens
     eos.type = "solid_bulk";
     eos.where = constitutive.where;
   }
+  if (eos.type == "crush_curve")
+    for (const char* key : kCrushCurveKeys)
+      if (!eos.has(key) && constitutive.has(key)) eos.params[key] = constitutive.get(key);
   const ModelInfo& info = *solidEquationsOfState().find(eos.type);
   for (const auto& p : info.params)
     if (p.need == Need::Optional && !eos.has(p.name)) eos.params[p.name] = p.fallback;

@@ -214,7 +214,12 @@ class SchemaReader {
       allowFor(m, solidKeys, fluidKeys, "material '" + mat.name + "' is a solid");
       mat.density = m.number("density", Range::positive());                    // [kg/m^3], required
       mat.constitutive = readModel(m.required("model"), constitutiveModels());  // model: see catalog
-      if (const auto eos = m.get("eos")) mat.eos = readModel(*eos, solidEquationsOfState());
+      if (const auto eos = m.get("eos")) {
+        mat.eos = readModel(*eos, solidEquationsOfState());
+        if (mat.eos.type == "crush_curve" && mat.constitutive.type != "crushable_foam")
+          eos->fail("material '" + mat.name + "': the crush_curve equation of state is a crushable foam's; its model "
+                    "is '" + mat.constitutive.type + "' (use solid_bulk)");
+      }
       completeSolidEos(mat.eos, mat.constitutive, mat.density);
       mat.thermal_expansivity = m.number("thermal_expansivity", 0.0, Range::any());  // beta [1/K]
     }

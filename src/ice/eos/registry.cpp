@@ -93,7 +93,23 @@ const std::map<std::string, Maker>& registry() {
        [](const core::ModelSpec& s, double cv) {
          core::SolidBulkEos law(param(s, "bulk_modulus", true), param(s, "threshold_pressure", true),
                                 param(s, "reference_density", true));
-         return std::unique_ptr<Eos>(new ExternalSolidEos(law, cv));
+         return std::unique_ptr<Eos>(new ExternalSolidEos<core::SolidBulkEos>(law, "solid_bulk", cv));
+       }},
+      {"crush_curve",
+       [](const core::ModelSpec& s, double cv) {
+         core::FoamCrushParams f;
+         f.bulkModulus = param(s, "bulk_modulus", true);
+         f.thresholdPressure = param(s, "threshold_pressure", true);
+         f.referenceDensity = param(s, "reference_density", true);
+         core::FoamHardening& y = f.hardening;
+         y.plateau = param(s, "plateau_stress", true);
+         y.densification = param(s, "densification_strain", true);
+         y.plasticPoisson = param(s, "plastic_poissons_ratio", false);
+         y.gamma = param(s, "hardening_gamma", false);
+         y.alpha2 = param(s, "hardening_alpha2", false);
+         y.beta = param(s, "hardening_beta", true);
+         y.denseBulk = param(s, "densified_bulk_modulus", true);
+         return std::unique_ptr<Eos>(new ExternalSolidEos<core::FoamCrushCurve>(core::FoamCrushCurve(f), "crush_curve", cv));
        }},
   };
   return r;

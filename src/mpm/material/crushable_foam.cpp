@@ -18,9 +18,9 @@ CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParam
                                 std::to_string(f_.plasticPoisson));
   if (!(f_.beta > 0)) throw std::invalid_argument("crushable_foam: hardening_beta must be > 0");
   if (!(f_.denseBulk > 0)) throw std::invalid_argument("crushable_foam: densified_bulk_modulus must be > 0");
-  alpha_ = std::sqrt(9.0 * (1.0 - 2.0 * f_.plasticPoisson) / (2.0 * (1.0 + f_.plasticPoisson)));
+  alpha_ = f_.alpha();
   shape_ = 1.0 + alpha_ * alpha_ / 9.0;
-  denseJ_ = std::exp(-3.0 * alpha_ * alpha_ * f_.densification / (9.0 + alpha_ * alpha_));
+  denseJ_ = std::exp(-f_.denseStrain());
 }
 
 double CrushableFoam::maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
@@ -41,10 +41,7 @@ double CrushableFoam::maxSignalSpeed(const ParticleSet& p, std::size_t begin, st
   return cmax;
 }
 
-double CrushableFoam::flowStress(double e) const {
-  const double x = e / f_.densification;
-  return f_.plateau + f_.gamma * x - f_.alpha2 * std::log1p(-std::pow(x, f_.beta));
-}
+double CrushableFoam::flowStress(double e) const { return f_.flowStress(e); }
 
 Sym3 CrushableFoam::denseUpdate(const Mat3& L, const Sym3& s, double dt, double* eqps) const {
   // Compacted to the solid: the mean stress elastic with K_s, the deviator bounded by the flow stress

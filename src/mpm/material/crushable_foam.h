@@ -28,20 +28,15 @@
 /// Scene: `model: {type: crushable_foam, youngs_modulus, poissons_ratio, plateau_stress,
 /// densification_strain, densified_bulk_modulus, plastic_poissons_ratio, hardening_gamma,
 /// hardening_alpha2, hardening_beta}`.
+#include "core/material/foam_crush_curve.h"
 #include "mpm/material/constitutive_model.h"
 #include "mpm/material/tensor.h"
 
 namespace mpmice::mpm {
 
-struct CrushableFoamParams {
-  double plateau = 0;         // sigma_p [Pa]
-  double densification = 0;  // eps_D
-  double plasticPoisson = 0;  // nu_p
-  double gamma = 0;          // [Pa]
-  double alpha2 = 0;         // [Pa]
-  double beta = 1;
-  double denseBulk = 0;       // K_s [Pa], the compacted solid's bulk modulus
-};
+/// The foam's hardening and compacted solid (the crushable_foam keys), shared with ICE's view of the
+/// foam (core/material/foam_crush_curve.h: the crush_curve EOS).
+using CrushableFoamParams = core::FoamHardening;
 
 class CrushableFoam final : public ConstitutiveModel {
  public:

@@ -8,6 +8,7 @@
 #include "mpm/material/constitutive_model.h"
 #include "mpm/material/crushable_foam.h"
 #include "mpm/material/j2_plasticity.h"
+#include "core/material/foam_crush_curve.h"
 #include "core/material/solid_bulk_eos.h"
 #include "mpm/particles/particle_set.h"
 
@@ -299,6 +300,55 @@ TEST(CrushableFoam, HydrostaticCrushPastFullDensityTakesTheSolidsBulkModulus) {
               std::sqrt((kFoamKs + 4.0 / 3 * kFoamE / (2 * (1 + kFoamNu))) * p.vol[0] / p.mass[0]), 1e-9 * 6000);
   std::printf("hydrostatic crush past full density: p %.4e Pa at J %.4f (%.4e at J_d), wave speed %.0f m/s\n", p2,
               p.vol[0], p1, m->maxSignalSpeed(p, 0, 1, 3));
+}
+
+// ICE reads a crushable foam's volume from its crush curve (the `crush_curve` EOS,
+// core/material/foam_crush_curve.h): the curve is this model's hydrostatic response, elastic,
+// crushing and compacted, for nu_p 0 and 0.2 (alpha 2.12 and 1.5). Checked along a hydrostatic
+// crush of the model to V/V0 0.07: its mean stress against the curve at -ln J, and the curve's
+// inverse (the density ICE gives the foam at that pressure) against the particle's density.
+TEST(CrushableFoam, IcesCrushCurveIsTheModelsHydrostaticResponse) {
+  for (const double nup : {0.0, 0.2}) {
+    const auto s = foamSpec(nup);
+    auto m = createConstitutiveModel(s, "foam");
+    const CrushableFoam& foam = dynamic_cast<const CrushableFoam&>(*m);
+    core::FoamCrushParams f;
+    f.bulkModulus = s.params.at("bulk_modulus"), f.thresholdPressure = 101325, f.referenceDensity = 270;
+    f.hardening = {kSp, s.params.at("densification_strain"), nup, kGamma, kAlpha2, kBeta, kFoamKs};
+    const core::FoamCrushCurve curve(f);
+    EXPECT_NEAR(curve.denseVolumeRatio(), foam.denseVolumeRatio(), 1e-14);
+    auto p = one();
+    const double d = -1.0 / 3, dt = 2e-4, L[9] = {d, 0, 0, 0, d, 0, 0, 0, d};
+    double worstP = 0, worstRho = 0;
+    int elastic = 0, crushing = 0, dense = 0;
+    double ev = 0;  // the volumetric log strain, J = exp(ev) exactly (the helper's F update is first order)
+    while (p.vol[0] > 0.07) {
+      for (int step = 0; step < 10; ++step) {
+        for (int k = 0; k < 9; ++k) p.L[k][0] = L[k];
+        ev -= dt;
+        for (int k : {0, 4, 8}) p.F[k][0] = std::exp(ev / 3);
+        p.vol[0] = p.vol0[0] * std::exp(ev);
+        m->updateStress(p, 0, 1, dt);
+      }
+      const double J = p.vol[0], P = -p.stress[kXX][0];
+      const double exact = curve.crushPressure(-std::log(J));
+      worstP = std::max(worstP, std::fabs(P - exact) / exact);
+      const double rho = curve.density(101325 + P);
+      worstRho = std::max(worstRho, std::fabs(rho * J / 270 - 1));
+      if (-std::log(J) < 1.5e6 * 0.5 / f.bulkModulus) ++elastic;
+      else if (J > curve.denseVolumeRatio()) ++crushing;
+      else ++dense;
+    }
+    EXPECT_GT(elastic, 0) << nup;
+    EXPECT_GT(crushing, 100) << nup;
+    EXPECT_GT(dense, 10) << nup;
+    // The model integrates in steps (its return map, the split at J_d): 1e-6 of the pressure.
+    EXPECT_LT(worstP, 1e-6) << nup;
+    EXPECT_LT(worstRho, 1e-6) << nup;
+    std::printf("nu_p %.1f: crush curve against the model's hydrostatic crush: |dP|/P %.2e, |drho|/rho %.2e; "
+                "full density at %.4f, %.4e Pa\n",
+                nup, worstP, worstRho, curve.denseVolumeRatio(), curve.densePressure());
+  }
 }
 
 // A confined crush (uniaxial strain, the foam layer under the water shock) to 1 GPa of axial

@@ -191,6 +191,11 @@ std::vector<BadScene> badScenes() {
       {"misspelled EOS parameter",
        kMesh + kTime + "materials:\n  - {name: air, kind: fluid, eos: {type: ideal_gas, gama: 1.4}}\n" + kRegion,
        {"materials[0].eos.gama: unknown key 'gama'", "did you mean 'gamma'?"}},
+      {"crush curve for a solid that is not a foam",
+       kMesh2 + kTime + "materials:\n  - {name: steel, kind: solid, density: 8900, model: {type: neo_hookean, "
+                        "youngs_modulus: 1e9, poissons_ratio: 0.3}, eos: {type: crush_curve}}\n"
+                        "geometry:\n  - {shape: {type: box, lo: [0, 0], hi: [1, 1]}, material: steel}\n",
+       {"test.yaml:4:", "materials[0].eos", "crush_curve", "crushable foam", "'neo_hookean'", "solid_bulk"}},
       {"solid without density",
        kMesh2 + kTime + "materials:\n  - {name: steel, kind: solid, model: {type: neo_hookean, youngs_modulus: 1e9, "
                         "poissons_ratio: 0.3}}\n"
