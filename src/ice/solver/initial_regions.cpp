@@ -33,6 +33,7 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
   const int nm = static_cast<int>(scene.materials.size());
   RegionPlan plan;
   plan.background.resize(static_cast<std::size_t>(nm));
+  plan.state.resize(scene.geometry.size());
   auto external = [&](int r) { return scene.materials[r].kind == core::MaterialKind::Solid; };
   for (int r = 0; r < nm && plan.firstFluid < 0; ++r)
     if (!external(r)) plan.firstFluid = r;
@@ -76,12 +77,20 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
     // Each fluid's start state in this region lies above 0 K: a pressure below a JWL products'
     // or a stiffened gas's cold curve at the given density gives e below the cold energy, which
     // the first steps found (products at -11708 K, by e / cv, named in a cell of the foam beside them).
+    std::vector<BackgroundState>& states = plan.state[static_cast<std::size_t>(&reg - scene.geometry.data())];
+    states.assign(static_cast<std::size_t>(nm), BackgroundState{});
+    for (const core::FillSpec& f : reg.fill) {  // each fluid's state here, resolved once
+      const int r = scene.materialIndex(f.material);
+      if (external(r)) continue;
+      BackgroundState& st = states[static_cast<std::size_t>(r)];
+      resolveState(*eos[static_cast<std::size_t>(r)], *reg.pressure, reg.temperature, reg.density, &st.rho, &st.e);
+      st.set = true;
+    }
     for (const core::FillSpec& f : reg.fill) {
       const int r = scene.materialIndex(f.material);
       if (external(r) || !(f.volume_fraction > 0)) continue;
       const Eos& law = *eos[static_cast<std::size_t>(r)];
-      double rho = 0, e = 0;
-      resolveState(law, *reg.pressure, reg.temperature, reg.density, &rho, &e);
+      const double rho = states[static_cast<std::size_t>(r)].rho, e = states[static_cast<std::size_t>(r)].e;
       const double T = rho > 0 ? law.temperature(rho, e) : 0.0;
       auto g = [](double v) {
         char b[32];
@@ -101,7 +110,7 @@ RegionPlan planRegions(const core::Scene& scene, const std::vector<const Eos*>& 
       const int r = scene.materialIndex(f.material);
       BackgroundState& bg = plan.background[static_cast<std::size_t>(r)];
       if (external(r) || bg.set) continue;
-      resolveState(*eos[static_cast<std::size_t>(r)], *reg.pressure, reg.temperature, reg.density, &bg.rho, &bg.e);
+      bg.rho = states[static_cast<std::size_t>(r)].rho, bg.e = states[static_cast<std::size_t>(r)].e;
       if (!(bg.rho > 0) || !std::isfinite(bg.rho) || !std::isfinite(bg.e))
         badInput(reg.where, "geometry." + reg.name + ": material '" + f.material + "' has no valid state at p = " +
                            formatNumber(*reg.pressure) + " Pa, T = " + formatNumber(reg.temperature) + " K (its equation of state gives " +

@@ -30,6 +30,9 @@ struct RegionPlan {
   std::vector<const core::RegionSpec*> fluid;  // objects whose fill holds a fluid, scene order
   std::vector<const core::RegionSpec*> solid;  // objects of solids only, scene order
   std::vector<BackgroundState> background;     // per material (fluids: the first region filling it)
+  /// Per geometry object (scene order), per material: the state the object places each fluid of
+  /// its fill at (set for the fluids it names; solid objects and the rest unset).
+  std::vector<std::vector<BackgroundState>> state;
   int firstFluid = -1;                         // the scene's first fluid material (-1: none)
 };
 

@@ -133,18 +133,9 @@ void IceSolver::initialize(const core::Scene& scene, bool coupledStart) {
   // ---- regions: validate, then each material's background state (first region that fills it)
   const RegionPlan plan = planRegions(scene, eos);
   const std::vector<BackgroundState>& bg = plan.background;
-  // Each fluid region's state of each material it holds, resolved once.
-  std::vector<std::vector<BackgroundState>> regionState(scene.geometry.size(), std::vector<BackgroundState>(nm));
-  for (const core::RegionSpec* reg : plan.fluid)
-    for (const core::FillSpec& f : reg->fill) {
-      const int r = scene.materialIndex(f.material);
-      if (st_.mat[r].external) continue;
-      BackgroundState& s = regionState[static_cast<std::size_t>(reg - scene.geometry.data())][r];
-      resolveState(*st_.mat[r].eos, *reg->pressure, reg->temperature, reg->density, &s.rho, &s.e);
-      s.set = true;
-    }
+  // Each fluid region's state of each material it holds (planRegions resolved it).
   auto stateOf = [&](const core::RegionSpec* reg, int r) -> const BackgroundState& {
-    return regionState[static_cast<std::size_t>(reg - scene.geometry.data())][r];
+    return plan.state[static_cast<std::size_t>(reg - scene.geometry.data())][static_cast<std::size_t>(r)];
   };
 
   // ---- the initial state, cell by cell: each fluid region's share of the cell (cellShares;

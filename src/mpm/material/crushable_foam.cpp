@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/material/signal_speed.h"
 #include "mpm/material/tensor.h"
 #include "mpm/mpm_constants.h"
 
@@ -25,20 +26,7 @@ CrushableFoam::CrushableFoam(const ElasticConstants& c, const CrushableFoamParam
 
 double CrushableFoam::maxSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim,
                                      std::size_t* arg) const {
-  const double Mf = c_.pWaveModulus(), Ms = f_.denseBulk + 4.0 * c_.G / 3.0;
-  double cmax = 0;
-  if (arg) *arg = end;
-  for (std::size_t i = begin; i < end; ++i) {
-    double vv = 0;
-    for (int d = 0; d < dim; ++d) vv += p.v[d][i] * p.v[d][i];
-    const double M = p.vol[i] <= denseJ_ * p.vol0[i] ? Ms : Mf;
-    const double s = std::sqrt(M * p.vol[i] / p.mass[i]) + std::sqrt(vv);
-    if (s > cmax) {  // a NaN speed is passed over
-      cmax = s;
-      if (arg) *arg = i;
-    }
-  }
-  return cmax;
+  return maxTwoModulusSignalSpeed(p, begin, end, dim, arg, c_.pWaveModulus(), f_.denseBulk + 4.0 * c_.G / 3.0, denseJ_);
 }
 
 double CrushableFoam::flowStress(double e) const { return f_.flowStress(e); }

@@ -12,5 +12,9 @@ namespace mpmice::mpm {
 /// if none).
 double maxElasticSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t* arg,
                              double modulus);
+/// The same with each particle's modulus: denseModulus where V <= denseRatio V0 (a crushable foam
+/// compacted to its solid), `modulus` elsewhere.
+double maxTwoModulusSignalSpeed(const ParticleSet& p, std::size_t begin, std::size_t end, int dim, std::size_t* arg,
+                                double modulus, double denseModulus, double denseRatio);
 
 }  // namespace mpmice::mpm
