@@ -131,7 +131,26 @@ void IceSolver::computeSourcesAndLagrangian() {
         dvv = dvv > 0 ? kMaxVolumeChange : -kMaxVolumeChange;
         ++fallbacks_;
       }
-      const double de = -p * v * dvv;
+      // The work of the volume change at the start pressure, p dV. A compressible fluid of small
+      // mass beside a stiff one takes most of its cell's volume change (up to the cap), and there
+      // p dV at the start pressure alone misses the rise of the fluid's pressure over the step
+      // (second order in dvv): cold JWL products in water, compressed by half their volume in a
+      // step, fell below their cold energy that way (the underwater scene stopped at 737 us,
+      // docs/ice.md "The Lagrangian work of a small compressible phase"). Where that work would
+      // take a fluid from above its cold energy to below it, it is taken at the mean of the start
+      // pressure and the fluid's own end pressure p_r(1 / v_L, e_L) = a + b e_L (trapezoidal,
+      // implicit in e_L; every EOS here is linear in e at fixed density), if that keeps it above.
+      // Not for a cavitated liquid (kappa = inf: its work is at the cut-off) nor for solids.
+      double de = -p * v * dvv;
+      if (P.cold && !P.external && mass > 0 && dvv != 0 && !std::isinf(ka[r])) {
+        const double dv = v * dvv, rho1 = 1.0 / (v + dv), ec1 = P.eos->coldEnergy(rho1);
+        if (P.e[c] + de - ec1 <= 0 && P.e[c] - P.eos->coldEnergy(1.0 / v) > 0) {
+          const double a = P.eos->pressure(rho1, 0.0), b = P.eos->pressure(rho1, 1.0) - a;
+          const double den = 1.0 + 0.5 * dv * b;
+          const double e1 = den > 0 ? (P.e[c] - 0.5 * dv * (p + a)) / den : -1.0;
+          if (den > 0 && e1 - ec1 > 0) de = e1 - P.e[c];
+        }
+      }
       P.eL[c] = P.e[c] + de;
       P.vL[c] = v * (1.0 + dvv);
       if (P.external) {  // its energy change is its own solver's: the work the forces did on it
@@ -193,6 +212,7 @@ void IceSolver::computeSourcesAndLagrangian() {
         const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
         const double ec = P.cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0;
         if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) return false;
+        if (!(e0 - ec > 0) && share < 0) return false;  // at or below its cold energy already: no further drain
         P.eL[c] = e1;
         return true;
       };
