@@ -114,6 +114,17 @@ void IceSolver::computeSourcesAndLagrangian() {
     for (int r = 0; r < n; ++r) {
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
+      if (!P.external && !(mass > 0)) {
+        // An absent fluid (no mass here) keeps its placeholder state: accelerated and worked on
+        // at its absent density, an air's state in a water cell grew 4-5 times a step (specific
+        // volume 1e153 m^3/kg, e 1e158 J/kg) until it overflowed and 0 x inf turned the cell's
+        // energy correction, and the water with it, into NaN (the water-filled foam model run to
+        // 1 ms stopped at 545 us, docs/ice.md "The Lagrangian work of a small compressible phase").
+        for (int d = 0; d < dim; ++d) P.uL[d][c] = P.u[d][c];
+        P.eL[c] = P.e[c];
+        P.vL[c] = v;
+        continue;
+      }
       const double f = P.th[c] > 0 ? volumeShare(r) / P.th[c] : (kbar > 0 && !cavity ? ka[r] / kbar : 0.0);
       double ke0 = 0, ke1 = 0;
       for (int d = 0; d < dim; ++d) {
