@@ -208,11 +208,6 @@ const ModelFamily& solidEquationsOfState() {
   return f;
 }
 
-/// The crushable_foam keys a crush_curve EOS takes from the solid's model when the scene leaves them out.
-const char* const kCrushCurveKeys[] = {"plateau_stress",  "densification_strain", "plastic_poissons_ratio",
-                                       "hardening_gamma", "hardening_alpha2",     "hardening_beta",
-                                       "densified_bulk_modulus"};
-
 const ModelFamily& cavitationModels() {
   static const ModelFamily f{
       "cavitation model",
@@ -267,14 +262,15 @@ void completeSolidEos(ModelSpec& eos, const ModelSpec& constitutive, double dens
     eos.type = "solid_bulk";
     eos.where = constitutive.where;
   }
-  if (eos.type == "crush_curve")
-    for (const char* key : kCrushCurveKeys)
-      if (!eos.has(key) && constitutive.has(key)) eos.params[key] = constitutive.get(key);
+  // A derived parameter the scene leaves out is the material density (reference_density) or the
+  // constitutive model's parameter of the same name (bulk_modulus; crush_curve's hardening keys).
   const ModelInfo& info = *solidEquationsOfState().find(eos.type);
-  for (const auto& p : info.params)
-    if (p.need == Need::Optional && !eos.has(p.name)) eos.params[p.name] = p.fallback;
-  if (!eos.has("bulk_modulus")) eos.params["bulk_modulus"] = constitutive.get("bulk_modulus");
-  if (!eos.has("reference_density")) eos.params["reference_density"] = density;
+  for (const auto& p : info.params) {
+    if (eos.has(p.name)) continue;
+    if (p.need == Need::Optional) eos.params[p.name] = p.fallback;
+    else if (p.name == "reference_density") eos.params[p.name] = density;
+    else if (p.need == Need::Derived && constitutive.has(p.name)) eos.params[p.name] = constitutive.get(p.name);
+  }
 }
 
 void elasticFromBulkShear(double K, double G, double& E, double& nu) {

@@ -111,7 +111,9 @@ void IceSolver::computeSourcesAndLagrangian() {
       }
     }
     double dKE = 0, dIE = 0, dWork = 0;
+    double ecL[kMaxMaterials];  // a fluid's cold energy at its Lagrangian volume (0 without one)
     for (int r = 0; r < n; ++r) {
+      ecL[r] = 0.0;
       const Ptr& P = ptr[r];
       const double v = P.v[c], mass = P.m[c];
       if (!P.external && !(mass > 0)) {
@@ -153,17 +155,21 @@ void IceSolver::computeSourcesAndLagrangian() {
       // implicit in e_L; every EOS here is linear in e at fixed density), if that keeps it above.
       // Not for a cavitated liquid (kappa = inf: its work is at the cut-off) nor for solids.
       double de = -p * v * dvv;
-      if (P.cold && !P.external && mass > 0 && dvv != 0 && !std::isinf(ka[r])) {
-        const double dv = v * dvv, rho1 = 1.0 / (v + dv), ec1 = P.eos->coldEnergy(rho1);
-        if (P.e[c] + de - ec1 <= 0 && P.e[c] - P.eos->coldEnergy(1.0 / v) > 0) {
-          const double a = P.eos->pressure(rho1, 0.0), b = P.eos->pressure(rho1, 1.0) - a;
+      const double vL = v * (1.0 + dvv);
+      if (P.cold && !P.external) {
+        const double rho1 = 1.0 / vL, ec1 = P.eos->coldEnergy(rho1);
+        ecL[r] = ec1;
+        if (dvv != 0 && !std::isinf(ka[r]) && P.e[c] + de - ec1 <= 0 && P.e[c] - P.eos->coldEnergy(1.0 / v) > 0) {
+          const double dv = vL - v, a = P.eos->pressure(rho1, 0.0), b = P.eos->pressure(rho1, 1.0) - a;
           const double den = 1.0 + 0.5 * dv * b;
-          const double e1 = den > 0 ? (P.e[c] - 0.5 * dv * (p + a)) / den : -1.0;
-          if (den > 0 && e1 - ec1 > 0) de = e1 - P.e[c];
+          if (den > 0) {
+            const double e1 = (P.e[c] - 0.5 * dv * (p + a)) / den;
+            if (e1 - ec1 > 0) de = e1 - P.e[c];
+          }
         }
       }
       P.eL[c] = P.e[c] + de;
-      P.vL[c] = v * (1.0 + dvv);
+      P.vL[c] = vL;
       if (P.external) {  // its energy change is its own solver's: the work the forces did on it
         dWork += P.work[oc];
         continue;
@@ -221,7 +227,7 @@ void IceSolver::computeSourcesAndLagrangian() {
         const Ptr& P = ptr[r];
         const double e0 = P.eL[c];
         const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
-        const double ec = P.cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0;
+        const double ec = ecL[r];  // (0 for an absent fluid: it takes no share)
         if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) return false;
         if (!(e0 - ec > 0) && share < 0) return false;  // at or below its cold energy already: no further drain
         P.eL[c] = e1;
