@@ -17,6 +17,7 @@
 #include "ice/exchange/pointwise_exchange.h"
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/sources/energy_shares.h"
 #include "ice/state/fixed_counts.h"
 
 namespace mpmice::ice {
@@ -48,6 +49,8 @@ void IceSolver::exchange() {
               m.eos->cv(), m.external};
   }
   const core::Box& sb = st_.press.box();
+  dragHeat_.resize(static_cast<std::size_t>(owned_.numPts()));
+  double* const drag = dragHeat_.data();  // per owned cell: the drag heat D [J] (applyDeferredCorrection)
   // The kinetic energy the drag dissipates D [J] and the heat capacity C = sum m cv [J/K] of one
   // cell after its momentum exchange (T double; D, C start at 0), or of four (T lanes::v4d).
   auto dragHeat = [&]<class T>(int n, int nd, const T* x, const T* x0, const T* mass, T& D, T& C) {
@@ -80,6 +83,7 @@ void IceSolver::exchange() {
       pointwiseExchange(n, s, w, x, nd);
       double D = 0, C = 0;
       dragHeat(n, nd, x, x0, mass, D, C);
+      drag[o] = D;
       for (int r = 0; r < n; ++r) {
         const Ptr& Q = ptr[r];
         const double de = C > 0 ? D * ptr[r].cv / C : 0.0;
@@ -125,6 +129,7 @@ void IceSolver::exchange() {
       pointwiseExchangeLanes<NM, DIM>(s, w, x);
       v4d D = splat(0.0), C = splat(0.0);
       dragHeat(NM, DIM, x, x0, mass, D, C);
+      store(drag + o, D);
       for (int r = 0; r < NM; ++r) {
         const Ptr& Q = ptr[r];
         const v4d de = sel(C > 0, D * ptr[r].cv / C, splat(0.0));
@@ -157,7 +162,42 @@ void IceSolver::exchange() {
   // The owned cells in forEach's order, by rows (flat indices: o counts the owned cells).
   auto sweep = [&]<int NM, int DIM>() { sweepRowsByLanes<NM, DIM, std::int64_t>(owned_, sb, cellLanes, cell); };
   withFixedCounts<false>(nm, dim, sweep);
+  applyDeferredCorrection();
   relaxEmbeddedFluidTemperatures();
+}
+
+// The Lagrangian phase's correction of the cells with a solid (lagrangian_phase.cpp) and the drag
+// heat just given, shared together by heat capacity: the two are mostly the kinetic energy the
+// explicit acceleration gave the fluids, taken back there and returned as drag heat here. The drag
+// heat is taken back out of each material (it was given at one temperature rise, which the heat
+// exchange since commutes with) and the sum given with the drain guard measured from there, not
+// from a fluid inflated by the drag heat (water at 5e8 J/kg by it refused its -5e8 J/kg share).
+void IceSolver::applyDeferredCorrection() {
+  const int nm = numMaterials();
+  ShareTaker takers[kMaxMaterials];
+  double shares[kMaxMaterials];
+  for (const DeferredCorrection& k : deferred_) {
+    double C = 0;
+    for (int r = 0; r < nm; ++r) C += st_.mat[r].mass.data()[k.c] * st_.mat[r].eos->cv();
+    if (!(C > 0)) continue;
+    const double Dd = dragHeat_[static_cast<std::size_t>(k.oc)];
+    for (int r = 0; r < nm; ++r) {
+      MaterialState& m = st_.mat[r];
+      const double mass = m.mass.data()[k.c], cv = m.eos->cv();
+      double* e = &m.lagEint().data()[k.c];
+      double* dEn = m.external ? &m.dEnergy.data()[k.oc] : nullptr;
+      const double back = Dd * cv / C;  // the drag heat's share, per unit mass
+      *e -= back;
+      if (dEn) *dEn -= mass * back;
+      const bool cold = !m.external && mass > 0 && m.eos->hasColdEnergy();
+      takers[r] = {mass, cv, e, cold ? m.eos->coldEnergy(1.0 / m.lagSpvol().data()[k.c]) : 0.0, m.external, dEn};
+      shares[r] = mass * cv / C * (k.D + Dd);
+    }
+    const SharesGiven g = giveShares(nm, takers, shares);
+    fallbacks_ += g.refused;
+    if (g.lost != 0) audit_.add(g.lost, k.c, g.worst);
+  }
+  deferred_.clear();
 }
 
 }  // namespace mpmice::ice

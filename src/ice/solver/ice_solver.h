@@ -288,6 +288,15 @@ class IceSolver {
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
   EnergyAudit audit_;
+  /// The Lagrangian phase's correction of the cells with a solid, given after the momentum
+  /// exchange with the drag heat (applyDeferredCorrection): stored and owned index, D [J].
+  struct DeferredCorrection {
+    std::int64_t c, oc;
+    double D;
+  };
+  std::vector<DeferredCorrection> deferred_;
+  std::vector<double> dragHeat_;  // exchange(): per owned cell, the drag heat [J]
+  void applyDeferredCorrection();
   std::vector<SoundSpeedViolation> soundBad_;  // soundSpeedViolations(): finishEquilibrium's
   std::array<InflowState, 6> inflow_{};
   core::Field initialPressure_;           // the scene's pressure per owned cell (coupled start only)

@@ -20,6 +20,7 @@
 #include "ice/exchange/pointwise_exchange.h"  // kMaxMaterials
 #include "ice/ice_constants.h"
 #include "ice/solver/ice_solver.h"
+#include "ice/sources/energy_shares.h"
 #include "ice/state/phase_units.h"
 
 namespace mpmice::ice {
@@ -74,6 +75,10 @@ void IceSolver::computeSourcesAndLagrangian() {
   const double* dxs = faces.dx;
   const double* pF[3] = {nullptr, nullptr, nullptr};
   for (int d = 0; d < dim; ++d) pF[d] = st_.pressFace[d].data();
+  // In a cell with a solid the heat-capacity share of the correction waits for the momentum
+  // exchange's drag heat (below; applyDeferredCorrection).
+  const bool deferCorrection = anyK_ && nm >= 2;
+  deferred_.clear();
   // One owned cell: stored index c, oc its index in the owned box (an external material's coupling
   // work and exchange energy), fls[d] the index of its low face normal to d. NM > 0:
   // the number of materials fixed at compile time (the small loops unroll; the same operations in
@@ -219,63 +224,36 @@ void IceSolver::computeSourcesAndLagrangian() {
         }
         if (given && kf > 0) Dv = p * (dVs - share);
       }
-      const double Dr = D - thf * Dv;  // what the heat capacities share
-      // Gives `share` [J] to fluid r unless it would drain its thermal energy e - e_cold (a
-      // Mie-Gruneisen liquid with a reference temperature T0 has e = 0 at T0: e < 0 is a state
-      // below T0, not below 0 K); returns whether it took it.
-      auto give = [&](int r, double share) {
-        const Ptr& P = ptr[r];
-        const double e0 = P.eL[c];
-        const double e1 = P.m[c] > 0 ? e0 + share / P.m[c] : e0;
-        const double ec = ecL[r];  // (0 for an absent fluid: it takes no share)
-        if (e0 - ec > 0 && e1 - ec < kMinEnergyShare * (e0 - ec)) return false;
-        if (!(e0 - ec > 0) && share < 0) return false;  // at or below its cold energy already: no further drain
-        P.eL[c] = e1;
-        return true;
-      };
-      double left = 0;     // the shares fluids could not take [J]
-      unsigned took = 0;   // the fluids that took theirs (bit r)
-      int leftMat = -1;    // the fluid with the largest share not taken (the audit names it)
-      double leftMax = 0;
+      // What the heat capacities share. In a cell with a solid, where the momentum exchange follows,
+      // it is given after the exchange together with the drag heat (exchange_phase.cpp): the two are
+      // the kinetic energy the explicit acceleration gives the fluids, taken back here and returned
+      // as drag heat there, and both are shared by heat capacity. Apart, each can exceed the cell's
+      // energy: near-vacuum air (1e-7 kg/m^3) in a strengthless foam's cells beside water at 40 MPa
+      // took 1e9 m/s in a step, D -2e6 J against a cell of 0.1 J of fluid energy; the fluids refused
+      // their negative shares, took the drag heat, and the audit stopped the run (docs/slides.md
+      // "Runs to 1 ms"). Together they are the cell's net p dV work less its kinetic energy change.
+      double Dr = D - thf * Dv;
+      if (solid && deferCorrection) {
+        deferred_.push_back({c, oc, Dr});
+        Dr = 0;
+      }
+      ShareTaker takers[kMaxMaterials];
+      double shares[kMaxMaterials];
       for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
         double share = (solid ? P.m[c] * P.cv / C : volumeShare(r)) * Dr;  // [J]
         if (Dv != 0 && !P.external) share += thf * volumeShare(r) / kf * Dv;
-        if (P.external) {
-          if (P.m[c] > 0) {
-            P.eL[c] += share / P.m[c];
-            P.dEn[oc] += share;
-          }
-          continue;
-        }
-        if (give(r, share)) {
-          took |= 1u << r;
-        } else {
-          ++fallbacks_;
-          left += share;
-          if (std::abs(share) > leftMax) leftMax = std::abs(share), leftMat = r;
-        }
+        shares[r] = share;
+        takers[r] = {P.m[c], P.cv, &P.eL[c], ecL[r], P.external, P.external ? &P.dEn[oc] : nullptr};
       }
       // A share one fluid could not take (a compressible trace, e.g. detonation products in water,
       // holds most of theta kappa and so most of a negative D) goes to the fluids that took theirs,
       // in proportion to their heat capacities; only what none of them can take is not conserved
       // (audited). Before, the whole share was audited: 1 % of the underwater scene's energy at
       // 2.5 mm cells (docs/slides.md).
-      if (left != 0) {
-        double Cf = 0;
-        for (int r = 0; r < n; ++r)
-          if (took >> r & 1u) Cf += ptr[r].m[c] * ptr[r].cv;
-        double lost = left;
-        if (Cf > 0) {
-          lost = 0;
-          for (int r = 0; r < n; ++r)
-            if (took >> r & 1u) {
-              const double s2 = ptr[r].m[c] * ptr[r].cv / Cf * left;
-              if (!give(r, s2)) lost += s2;
-            }
-        }
-        if (lost != 0) audit_.add(lost, c, leftMat);  // the share of D not taken (audited)
-      }
+      const SharesGiven g = giveShares(n, takers, shares);
+      fallbacks_ += g.refused;
+      if (g.lost != 0) audit_.add(g.lost, c, g.worst);  // the share of D not taken (audited)
     }
     if (anyGravity_)
       for (int r = 0; r < n; ++r)
