@@ -177,9 +177,7 @@ void IceSolver::applyDeferredCorrection() {
   ShareTaker takers[kMaxMaterials];
   double shares[kMaxMaterials];
   for (const DeferredCorrection& k : deferred_) {
-    double C = 0;
-    for (int r = 0; r < nm; ++r) C += st_.mat[r].mass.data()[k.c] * st_.mat[r].eos->cv();
-    if (!(C > 0)) continue;
+    const double C = k.C;
     const double Dd = dragHeat_[static_cast<std::size_t>(k.oc)];
     for (int r = 0; r < nm; ++r) {
       MaterialState& m = st_.mat[r];

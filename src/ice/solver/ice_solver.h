@@ -289,10 +289,11 @@ class IceSolver {
   long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
   EnergyAudit audit_;
   /// The Lagrangian phase's correction of the cells with a solid, given after the momentum
-  /// exchange with the drag heat (applyDeferredCorrection): stored and owned index, D [J].
+  /// exchange with the drag heat (applyDeferredCorrection): stored and owned index, D [J], and the
+  /// cell's heat capacity C = sum m cv [J/K] (the masses do not change between the two phases).
   struct DeferredCorrection {
     std::int64_t c, oc;
-    double D;
+    double D, C;
   };
   std::vector<DeferredCorrection> deferred_;
   std::vector<double> dragHeat_;  // exchange(): per owned cell, the drag heat [J]

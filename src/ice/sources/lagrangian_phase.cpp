@@ -234,7 +234,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       // "Runs to 1 ms"). Together they are the cell's net p dV work less its kinetic energy change.
       double Dr = D - thf * Dv;
       if (solid && deferCorrection) {
-        deferred_.push_back({c, oc, Dr});
+        deferred_.push_back({c, oc, Dr, C});  // C > 0: the solid has mass here
         Dr = 0;
       }
       ShareTaker takers[kMaxMaterials];
