@@ -409,7 +409,14 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
             // distance (k-th consecutive step: 2^-(2^k)), so a root decades above the floor (a
             // solid_bulk trace's tension branch: p ~ 1e-190 Pa) is bracketed in about ten steps,
             // and the first step is the plain bisection.
-            next = base + std::ldexp(b0, -(1 << std::min<int>(down, 10)));
+            // A step that would pass the smallest normal distance above the floor (from 1e-176 Pa
+            // a step of 2^-1024 lands on the floor itself) stops there instead: that
+            // distance is the last probe, so a root between it and the step before is bracketed,
+            // and f > 0 there is the failure below (no root above the floor in double range).
+            double step = std::ldexp(b0, -(1 << std::min<int>(down, 10)));
+            const double tiny = std::max(std::numeric_limits<double>::min(), std::nextafter(base, inf) - base);
+            if (!(step >= tiny)) step = tiny;
+            next = base + step;
             down = static_cast<unsigned char>(std::min<int>(down + 1, 11));
           } else {
             next = a0 > 0 && b0 > 1e3 * a0 ? base + std::sqrt(a0) * std::sqrt(b0) : 0.5 * (lo + hi);

@@ -10,7 +10,8 @@
 /// material per sweep, over the still-active cells): Newton steps, replaced by bisection
 /// (geometric across decades, measured from the floor; from the floor itself, while no iterate
 /// below the root has been seen, by steps of 2^-1, 2^-2, 2^-4, ... of the distance to it, so a
-/// root hundreds of decades above the floor is bracketed in about ten) or bracket expansion
+/// root hundreds of decades above the floor is bracketed in about ten, the smallest normal double
+/// above the floor the lowest such step) or bracket expansion
 /// whenever they leave the bracket, so every iterate is admissible. The iteration count per cell is returned as a
 /// diagnostic. A cell without a root is a failure saying why: a material with no admissible
 /// state at its energy (e.g. e <= 0), or f > 0 all the way down to the floor (the materials

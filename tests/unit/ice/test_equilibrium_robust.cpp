@@ -311,6 +311,58 @@ TEST(IceEquilibriumRobust, SolidTraceThatCannotFillTheDeficitIsNoRootAboveItsFlo
   EXPECT_GT(solid->minMargin, 0.0);
 }
 
+// The same kind of root 150-300 decades above the floor with the solid's stress-free pressure at the
+// filled lattices' 50 MPa ambient (p_ref / K = 0.018 for the polymer): the cell at the open face
+// where a polymer particle torn from an 8-cells-per-edge lattice (a = 3.5 mm, 100 Pa s) left the
+// specimen, silicone short of its volume beside it. The steps towards the floor (2^-1, 2^-2, 2^-4,
+// ... of the distance) reached 1.5e-176 .. 4.5e-172 Pa from warm starts at 1e-22 .. 3e-18 Pa, just
+// above the root near 1e-177 Pa; the next step (2^-1024 of the distance) underflowed to the floor
+// and the solve reported no root above it (the run stopped at 336 us). A step that would pass the
+// smallest normal double above the floor now stops there, which brackets the root (or, if the
+// materials do not fill the cell even there, is the failure of the test above). Before, 1013 of
+// these 3720 solves failed (every cell from some warm starts).
+TEST(IceEquilibriumRobust, SolidTraceRootBetweenTheLastStepAndTheSmallestDouble) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 5e7}, {"reference_density", 1180}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 1.62}, {"p_inf", 5.4877e8}}), 1500));
+  ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
+  // The run's cell first: silicone 814.92 kg/m^3 of the cell at e 1.398e6 J/kg, polymer 0.1169.
+  std::vector<double> rs = {0.116936292}, rl = {814.9244763}, es = {194053.1845}, el = {1397839.487};
+  for (const double pStar : {1e-160, 1e-200, 1e-250, 1e-290, 1e-305}) {
+    const double thetaS = 0.2;
+    rs.push_back(thetaS * solid->density(pStar, es[0]));
+    rl.push_back((1 - thetaS) * liquid->density(pStar, el[0]));
+    es.push_back(es[0]);
+    el.push_back(el[0]);
+  }
+  const std::size_t nc = rs.size();
+  // Warm starts at every decade from 1e-300 to 1e9 Pa (the run's cell failed from 1e-22 .. 3e-18:
+  // its last step landed at 1.5e-176 .. 4.5e-172, above the root).
+  std::vector<double> guesses;
+  for (int k = -300; k <= 9; ++k)
+    for (const double m : {1.0, 3.0}) guesses.push_back(m * std::pow(10.0, k));
+  for (const double guess : guesses) {
+    std::vector<double> ms(nc), ml(nc), p(nc, guess);
+    std::vector<int> it(nc);
+    std::vector<std::int64_t> cells;
+    for (std::size_t c = 0; c < nc; ++c) cells.push_back(static_cast<std::int64_t>(c));
+    solid->minMargin = liquid->minMargin = std::numeric_limits<double>::infinity();
+    const auto fails = eq.solve(cells, {rs.data(), rl.data()}, {es.data(), el.data()}, p.data(), {ms.data(), ml.data()},
+                                it.data());
+    ASSERT_TRUE(fails.empty()) << "guess " << guess << ": " << fails.size() << " failures, first in cell "
+                               << fails[0].cell << " at p = " << fails[0].p << " after " << fails[0].iterations;
+    for (std::size_t c = 0; c < nc; ++c) {
+      EXPECT_GT(p[c], 0.0) << "cell " << c;
+      EXPECT_NEAR(rs[c] / ms[c] + rl[c] / ml[c], 1.0, 1e-11) << "cell " << c << " guess " << guess;
+      EXPECT_LE(it[c], 60) << "cell " << c << " guess " << guess;
+    }
+    EXPECT_GT(p[0], 1e-190);  // the run's cell: the root near 1e-177 Pa
+    EXPECT_LT(p[0], 1e-170);
+    EXPECT_GT(solid->minMargin, 0.0);
+    EXPECT_GT(liquid->minMargin, 0.0);
+  }
+}
+
 // A liquid with the cavitation cut-off p_c = 0 beside a solid_bulk solid, whose floor is 0 too:
 // the cut-off ties the solid's floor and is the cell's. Short of its volume at p = 0, the liquid
 // cavitates there (p = 0, listed in cavitated(), the solid at its limit from above, the liquid
