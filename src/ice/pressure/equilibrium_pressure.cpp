@@ -132,9 +132,10 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
   std::size_t na = active_.size();
   floor_.assign(na, -inf);
   floorMat_.assign(na, -1);
-  // The trace rule: a fluid below traceY_ of the cell's fluid mass, with an admissible carried
-  // state, is held at its carried volume below its own pressure p_own (pHold_), and its floor
-  // (below p_own) does not bound the cell's interval.
+  // The trace rule: a material below traceY_ of the cell's fluid mass (a fluid, or an external
+  // one: a solid's smear at the edge of its particles' stencil), with an admissible carried state,
+  // is held at its carried volume below its own pressure p_own (pHold_), and its floor (below
+  // p_own) does not bound the cell's interval.
   const bool traces = traceY_ > 0 && carriedVolume != nullptr && na > 0;
   // Whether some material of the block is held (pHold_ set for it): the reads of pHold_ below are
   // made only then (without it every p_own is -inf and no test on it passes).
@@ -151,7 +152,6 @@ void EquilibriumPressure::solveBlock(const std::vector<std::int64_t>& cells, con
     }
     holdCand_.clear();
     for (std::size_t r = 0; r < nm; ++r) {
-      if (!fluid_[r]) continue;
       const double* vc = (*carriedVolume)[r];
       for (std::size_t a = 0; a < na; ++a) {
         const std::int64_t c = active_[a];

@@ -35,7 +35,11 @@
 /// ordinary material, so a cell in pressure equilibrium is solved exactly as without the rule.
 /// Without it, a trace of gas (1e-15 of a cell's mass) beside water in tension (p < 0) must fill
 /// the water's volume deficit at p > 0: its specific volume grows to 1e8 m^3/kg and the cell
-/// blows up a few hundred steps later.
+/// blows up a few hundred steps later. An external material (a solid) below Y_t of the cell's
+/// fluid mass is held the same way at the specific volume its solver gives it: a solid_bulk
+/// solid has no state at p <= 0, so a polymer particle's smear of 1e-15 kg in a cell of silicone
+/// in tension had to fill the liquid's deficit on its tension branch at p ~ 1e-460 Pa, below every
+/// double, and stopped the run (the filled lattices, docs/slides.md).
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -62,8 +66,8 @@ struct EquilibriumFailure {
 
 class EquilibriumPressure {
  public:
-  /// fluid[r]: material r may be a trace (external materials never are); traceMassFraction: Y_t
-  /// (0: no trace rule).
+  /// fluid[r]: material r is a fluid (the traces' reference is the cell's fluid mass; any present
+  /// material below Y_t of it is a trace); traceMassFraction: Y_t (0: no trace rule).
   EquilibriumPressure(std::vector<const Eos*> eos, double tolerance, int maxIterations,
                       std::vector<bool> fluid = {}, double traceMassFraction = 0.0);
 

@@ -363,6 +363,49 @@ TEST(IceEquilibriumRobust, SolidTraceRootBetweenTheLastStepAndTheSmallestDouble)
   }
 }
 
+// A solid's smear of 1e-15 kg (5.8e-8 kg/m^3 of the cell) beside silicone short of its volume at
+// p = 0: the state of the filled lattice a = 4.0 mm, 1 Pa s, 4 cells per edge at time.cfl 0.05 where
+// it stopped (131.9 us, "no equilibrium pressure ... down to the lower end 0 Pa of material
+// 'polymer'"): the solid's tension branch would fill the deficit only near 1e-460 Pa. Under the
+// trace rule the solid, 7e-11 of the cell's fluid mass, is held at the volume its particles give it
+// (its own pressure there, 5e7 Pa, is above the cell's), so the liquid takes the tension it takes
+// without the smear (-8.93 MPa); without the rule the cell has no root above the solid's floor.
+TEST(IceEquilibriumRobust, ASolidTraceIsHeldAtItsParticlesVolumeBesideALiquidInTension) {
+  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 5e7}, {"reference_density", 1180}}), 1500));
+  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 1.62}, {"p_inf", 5.4877e8}}), 1500));
+  const double rhoS = 5.798129564e-08, rhoL = 867.169486, eS = 126729.945, eL = 1636919.543, vS = 1.0 / 1181.0;
+  std::vector<double> rs = {rhoS}, rl = {rhoL}, es = {eS}, el = {eL}, vs = {vS}, vl = {1.0 / 870.0};
+  const std::vector<const double*> carried = {vs.data(), vl.data()};
+  for (const double traceY : {1e-6, 0.0}) {
+    ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100, {false, true}, traceY);
+    for (const double guess : {5e7, 1e5, -1e6}) {
+      std::vector<double> ms(1), ml(1), p = {guess};
+      std::vector<int> it(1);
+      solid->minMargin = liquid->minMargin = std::numeric_limits<double>::infinity();
+      const auto fails = eq.solve({0}, {rs.data(), rl.data()}, {es.data(), el.data()}, p.data(), {ms.data(), ml.data()},
+                                  it.data(), &carried);
+      if (traceY == 0) {  // the run's failure
+        ASSERT_EQ(fails.size(), 1u) << "guess " << guess;
+        EXPECT_EQ(fails[0].kind, ice::EquilibriumFailure::Kind::NoRootAboveFloor);
+        EXPECT_EQ(fails[0].material, 0);
+        continue;
+      }
+      ASSERT_TRUE(fails.empty()) << "guess " << guess << ": failed at p = " << fails[0].p;
+      // The solid held at its particles' density; the liquid fills the rest at its own pressure.
+      EXPECT_DOUBLE_EQ(ms[0], 1.0 / vS);
+      const double thetaS = rhoS * vS, rhoLiquid = rhoL / (1.0 - thetaS);
+      const double pLiquid = (1.62 - 1.0) * rhoLiquid * eL - 1.62 * 5.4877e8;  // the stiffened gas at it
+      EXPECT_NEAR(p[0], pLiquid, 1e-6 * std::abs(pLiquid)) << "guess " << guess;
+      EXPECT_LT(p[0], -8e6);
+      EXPECT_NEAR(rs[0] / ms[0] + rl[0] / ml[0], 1.0, 1e-11);
+      ASSERT_EQ(eq.heldTraces().size(), 1u);
+      EXPECT_EQ(eq.heldTraces()[0].first, 0);
+      EXPECT_GT(liquid->minMargin, 0.0);
+    }
+  }
+}
+
 // A liquid with the cavitation cut-off p_c = 0 beside a solid_bulk solid, whose floor is 0 too:
 // the cut-off ties the solid's floor and is the cell's. Short of its volume at p = 0, the liquid
 // cavitates there (p = 0, listed in cavitated(), the solid at its limit from above, the liquid
