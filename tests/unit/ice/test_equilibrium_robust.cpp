@@ -63,6 +63,15 @@ std::unique_ptr<RecordingEos> water() {
 std::unique_ptr<RecordingEos> air() {
   return std::make_unique<RecordingEos>(ice::makeEos(spec("ideal_gas", {{"gamma", 1.4}}), 717.5));
 }
+// The filled lattices' polymer (K = 2.78e9 Pa, solid_bulk with its stress-free pressure p_ref and
+// density rho0) and a silicone filler (a stiffened gas), both with cv 1500 J/(kg K).
+std::unique_ptr<RecordingEos> polymer(double pRef, double rho0) {
+  return std::make_unique<RecordingEos>(ice::makeEos(
+      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", pRef}, {"reference_density", rho0}}), 1500));
+}
+std::unique_ptr<RecordingEos> silicone(double gamma, double pInf) {
+  return std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", gamma}, {"p_inf", pInf}}), 1500));
+}
 std::unique_ptr<RecordingEos> mgWater() {
   return std::make_unique<RecordingEos>(ice::makeEos(
       spec("mie_gruneisen", {{"reference_density", 1000}, {"sound_speed", 1480}, {"slope", 1.75},
@@ -252,9 +261,8 @@ output: {enabled: false}
 // 100 iterations and the run stopped. Now it is bracketed by steps of 2^-1, 2^-2, 2^-4, ... towards
 // the floor: found within 60 iterations to the residual, p > 0, never at or below a floor.
 TEST(IceEquilibriumRobust, SolidTraceFillsALiquidsDeficitDecadesAboveTheFloor) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  auto solid = polymer(1e5, 1200);
+  auto liquid = silicone(4.4, 1.7e8);
   const double es = 1500 * 293.0, el = 1500 * 293.0;
   ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
   for (const double pStar : {1e-20, 1e-150, 1e-250}) {
@@ -290,9 +298,8 @@ TEST(IceEquilibriumRobust, SolidTraceFillsALiquidsDeficitDecadesAboveTheFloor) {
 // pressure (the root would lie near 1e-400 Pa): a failure saying there is no root above the floor,
 // which the solid sets, within the iteration limit, not a spin to the limit or a clamp.
 TEST(IceEquilibriumRobust, SolidTraceThatCannotFillTheDeficitIsNoRootAboveItsFloor) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  auto solid = polymer(1e5, 1200);
+  auto liquid = silicone(4.4, 1.7e8);
   const double es = 1500 * 293.0, el = 1500 * 293.0, thetaS = 1e-3;
   // v_s(1e-400) = v_s(1e-300) (1e-100)^(-p_ref / K): from the law's closed form, out of double range.
   const double vs = 1.0 / solid->density(1e-300, es) * std::pow(10.0, 100 * 1e5 / 2.78e9);
@@ -322,9 +329,8 @@ TEST(IceEquilibriumRobust, SolidTraceThatCannotFillTheDeficitIsNoRootAboveItsFlo
 // materials do not fill the cell even there, is the failure of the test above). Before, 1013 of
 // these 3720 solves failed (every cell from some warm starts).
 TEST(IceEquilibriumRobust, SolidTraceRootBetweenTheLastStepAndTheSmallestDouble) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 5e7}, {"reference_density", 1180}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 1.62}, {"p_inf", 5.4877e8}}), 1500));
+  auto solid = polymer(5e7, 1180);
+  auto liquid = silicone(1.62, 5.4877e8);
   ice::EquilibriumPressure eq({solid.get(), liquid.get()}, 1e-11, 100);
   // The run's cell first: silicone 814.92 kg/m^3 of the cell at e 1.398e6 J/kg, polymer 0.1169.
   std::vector<double> rs = {0.116936292}, rl = {814.9244763}, es = {194053.1845}, el = {1397839.487};
@@ -371,9 +377,8 @@ TEST(IceEquilibriumRobust, SolidTraceRootBetweenTheLastStepAndTheSmallestDouble)
 // (its own pressure there, 5e7 Pa, is above the cell's), so the liquid takes the tension it takes
 // without the smear (-8.93 MPa); without the rule the cell has no root above the solid's floor.
 TEST(IceEquilibriumRobust, ASolidTraceIsHeldAtItsParticlesVolumeBesideALiquidInTension) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 5e7}, {"reference_density", 1180}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 1.62}, {"p_inf", 5.4877e8}}), 1500));
+  auto solid = polymer(5e7, 1180);
+  auto liquid = silicone(1.62, 5.4877e8);
   const double rhoS = 5.798129564e-08, rhoL = 867.169486, eS = 126729.945, eL = 1636919.543, vS = 1.0 / 1181.0;
   std::vector<double> rs = {rhoS}, rl = {rhoL}, es = {eS}, el = {eL}, vs = {vS}, vl = {1.0 / 870.0};
   const std::vector<const double*> carried = {vs.data(), vl.data()};
@@ -412,9 +417,8 @@ TEST(IceEquilibriumRobust, ASolidTraceIsHeldAtItsParticlesVolumeBesideALiquidInT
 // taking the rest of the cell) instead of the solid's tension branch filling the deficit near
 // 1e-150 Pa; with enough liquid the root lies above 0 and is found as usual.
 TEST(IceEquilibriumRobust, ACutOffAtTheSolidsFloorCavitatesThere) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  auto solid = polymer(1e5, 1200);
+  auto liquid = silicone(4.4, 1.7e8);
   liquid->setCavitationPressure(0.0);
   const double es = 1500 * 293.0, el = 1500 * 293.0, thetaS = 0.3;
   const double rhoS = thetaS * solid->density(1e-9, es);
@@ -444,9 +448,8 @@ TEST(IceEquilibriumRobust, ACutOffAtTheSolidsFloorCavitatesThere) {
 // solid) a step: 100 iterations reached 7.5e-10 Pa of a root near 1e-2 and the run stopped. The
 // distance above the floor now grows by 2^2, 2^4, 2^8, ... after two slow steps.
 TEST(IceEquilibriumRobust, WarmStartsHundredsOfDecadesBelowTheRoot) {
-  auto solid = std::make_unique<RecordingEos>(ice::makeEos(
-      spec("solid_bulk", {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 1e5}, {"reference_density", 1200}}), 1500));
-  auto liquid = std::make_unique<RecordingEos>(ice::makeEos(spec("stiffened_gas", {{"gamma", 4.4}, {"p_inf", 1.7e8}}), 1500));
+  auto solid = polymer(1e5, 1200);
+  auto liquid = silicone(4.4, 1.7e8);
   auto gas = air();
   const double es = 1500 * 293.0, el = 1500 * 293.0, eg = 717.5 * 293.0;
   const std::vector<double> guesses = {1e-150, 1e-250, 1e-300, 1e-20};
