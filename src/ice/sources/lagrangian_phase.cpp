@@ -1,6 +1,6 @@
 // IceSolver phases 8-9 and 11: momentum and energy sources at cell centres, the Lagrangian values
 // and the specific volume evolution.
-//   u_L = u - dt v_r grad(p_f) + dt g (+ viscous),      e_L = e - dt p v_r (kappa_r / kbar) div U
+//   u_L = u - dt v_r grad(p_f) + dt g (+ viscous),      e_L = e - dt p v_r (kappa_r / kbar) div U (+ viscous heat)
 //   v_L = v (1 + dt (kappa_r / kbar) div U),            U = sum_s theta_s u_f,s
 // The total energy is made conservative: the mismatch between the flux form -dt sum_faces A p_f U_f
 // (the p dV work of every material in the cell, U summed over all of them) and what the materials
@@ -282,6 +282,7 @@ void IceSolver::computeSourcesAndLagrangian() {
     const std::int64_t stride[3] = {1, sb.length(0), std::int64_t(sb.length(0)) * sb.length(1)};
     double dx2[3] = {1, 1, 1};
     for (int d = 0; d < dim; ++d) dx2[d] = mesh_.dx(d) * mesh_.dx(d);
+    if (anyViscous_) viscousSecond_.assign(static_cast<std::size_t>(owned_.numPts()), 0.0);
     for (MaterialState& m : st_.mat) {
       if (m.external || (m.viscosity <= 0 && m.conductivity <= 0)) continue;
       const bool visc = m.viscosity > 0, cond = m.conductivity > 0;
@@ -291,6 +292,7 @@ void IceSolver::computeSourcesAndLagrangian() {
       const auto us = visc ? core::components(std::as_const(m.velStart)) : std::array<const double*, 3>{};
       const auto u = core::components(m.vel);
       double* e = m.eint.data();
+      const double* mass = m.mass.data();
       const Eos& eos = *m.eos;
       for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
         for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
@@ -300,7 +302,10 @@ void IceSolver::computeSourcesAndLagrangian() {
             if (!(tc > 0)) continue;
             const double v = sv[c];
             const double Tc = cond ? eos.temperature(1.0 / v, es[c]) : 0.0;
-            double du[3] = {0, 0, 0}, dT = 0;
+            double du[3] = {0, 0, 0}, dT = 0, dk = 0;
+            double kc = 0;  // |u_start|^2 / 2 here
+            if (visc)
+              for (int q = 0; q < dim; ++q) kc += 0.5 * us[q][c] * us[q][c];
             for (int d = 0; d < dim; ++d)
               for (int sgn = -1; sgn <= 1; sgn += 2) {
                 const std::int64_t n = c + sgn * stride[d];
@@ -309,14 +314,75 @@ void IceSolver::computeSourcesAndLagrangian() {
                 // dt <= dx^2 / (2 dim nu) holds in every cell (with the mean, a trace of theta got
                 // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
                 const double tb = std::min(tc, th[n]) / tc / dx2[d];
-                if (visc)
-                  for (int q = 0; q < dim; ++q) du[q] += tb * (us[q][n] - us[q][c]);
+                if (visc) {
+                  double kn = 0;
+                  for (int q = 0; q < dim; ++q) {
+                    du[q] += tb * (us[q][n] - us[q][c]);
+                    kn += 0.5 * us[q][n] * us[q][n];
+                  }
+                  dk += tb * (kn - kc);
+                }
                 if (cond) dT += tb * (eos.temperature(1.0 / sv[n], es[n]) - Tc);
               }
-            for (int q = 0; q < dim; ++q) u[q][c] += dt_ * m.viscosity * v * du[q];
+            if (visc) {
+              // Viscous heating. The face force F = m dt nu tb (u_n - u_c) (start velocities; m v tb
+              // is the same seen from both cells, so momentum moves between them) does the work
+              // F . (u_c + u_n) / 2 on the face's fluid: a total-energy flux that cancels between the
+              // two cells (a no-slip wall's ghost, -u, does no work). What the cell's kinetic energy
+              // does not take of it, exactly (its change u . du + du . du / 2 from its Lagrangian
+              // velocity u), is heat, in two parts: the fluid takes the first-order part
+              //   dt nu [lap(|u|^2 / 2) - u . lap(u)] = dt nu sum_faces tb |u_n - u_c|^2 / 2 (u = u_start),
+              // its dissipation; the second-order part -du . du / 2 goes to the cell's materials by
+              // heat capacity below. Where the exchange holds the fluid to the cell's others and the
+              // step is the mixture's (ice_solver.cpp, stableTimeStep), du overshoots the mixture's
+              // change and that part is the kinetic energy the drag returns as heat, shared the same
+              // way; on the fluid alone it cooled a held viscous gas by ~10 times its dissipation.
+              const double f = dt_ * m.viscosity * v;
+              double work = f * dk, second = 0;
+              for (int q = 0; q < dim; ++q) {
+                const double dq = f * du[q];
+                work -= u[q][c] * dq;
+                second += 0.5 * dq * dq;
+                u[q][c] += dq;
+              }
+              e[c] += work;
+              viscousSecond_[static_cast<std::size_t>(owned_.index(i, j, k))] -= mass[c] * second;
+            }
             e[c] += dt_ * m.conductivity * v * dT;
           }
         }
+    }
+    if (anyViscous_) {
+      // The viscous updates' second-order part [J], by heat capacity: in a cell with a solid whose
+      // correction waits for the drag heat (the sweep's deferred_, in the owned cells' order), with
+      // it; elsewhere now, drain-guarded as the correction's shares.
+      std::size_t next = 0;
+      ShareTaker takers[kMaxMaterials];
+      double shares[kMaxMaterials];
+      for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
+        for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j)
+          for (int i = owned_.lo[0]; i <= owned_.hi[0]; ++i) {
+            const std::int64_t oc = owned_.index(i, j, k), c = sb.index(i, j, k);
+            const double h = viscousSecond_[static_cast<std::size_t>(oc)];
+            if (h == 0) continue;
+            while (next < deferred_.size() && deferred_[next].c < c) ++next;
+            if (next < deferred_.size() && deferred_[next].c == c) {
+              deferred_[next].D += h;
+              continue;
+            }
+            double C = 0;
+            for (int r = 0; r < nm; ++r) C += ptr[r].m[c] * ptr[r].cv;
+            for (int r = 0; r < nm; ++r) {
+              const Ptr& P = ptr[r];
+              const bool cold = P.cold && !P.external && P.m[c] > 0;
+              shares[r] = P.m[c] * P.cv / C * h;
+              takers[r] = {P.m[c], P.cv, &P.eL[c], cold ? P.eos->coldEnergy(1.0 / P.vL[c]) : 0.0, P.external,
+                           P.external ? &P.dEn[oc] : nullptr};
+            }
+            const SharesGiven g = giveShares(nm, takers, shares);
+            fallbacks_ += g.refused;
+            if (g.lost != 0) audit_.add(g.lost, c, g.worst);
+          }
     }
   }
 

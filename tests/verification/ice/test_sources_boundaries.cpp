@@ -513,17 +513,28 @@ TEST(IceExchange, AnEmbeddedTraceFollowsTheSolidsCoolingButNotBelowZeroKelvin) {
   }
 }
 
-// Viscosity: a shear wave u_y = U sin(2 pi x) in a periodic box decays as exp(-nu k^2 t).
-TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
+namespace {
+// Air (mu = 0.01 Pa s, 1.2 kg/m^3, 1e5 Pa, cv 717.5) on 16 x 1 cells of the unit square, periodic, or
+// with no-slip walls at x = 0 and 1; the shear tests set u_y.
+core::Scene viscousAirStrip(const char* name, double end, bool walls = false) {
   core::Scene s;
-  s.name = "shear_wave";
+  s.name = name;
   const int n = 16;
   s.mesh = core::Mesh(2, {0, 0, 0}, {1.0 / n, 1.0 / n, 1}, {n, 1, 1});
   for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
-  s.time.end = 0.25;
-  s.materials = {test::idealGas("air")};
+  if (walls) s.boundary[0].type = s.boundary[1].type = core::BoundaryType::NoSlipWall;
+  s.time.end = end;
+  s.materials = {test::idealGas("air", 1.4, 717.5)};
   s.materials[0].viscosity = 0.01;
   s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, 1e5, 1.2)};
+  return s;
+}
+}  // namespace
+
+// Viscosity: a shear wave u_y = U sin(2 pi x) in a periodic box decays as exp(-nu k^2 t).
+TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
+  const core::Scene s = viscousAirStrip("shear_wave", 0.25);
+  const int n = 16;
   ice::IceSolver sol(s, test::comm());
   const double k = 2 * M_PI;
   core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
@@ -544,6 +555,79 @@ TEST(IceViscosity, ShearWaveDecaysAtTheViscousRate) {
   std::printf("  amplitude %.6f, exact (discrete Laplacian) %.6f, continuous %.6f\n", amp, exact,
               std::exp(-nu * k * k * s.time.end));
   EXPECT_NEAR(amp, exact, 1e-3 * exact);
+}
+
+// Viscous heating: the kinetic energy a shear wave loses becomes heat where the shear is, and the
+// total energy is conserved. u_y = U sin(k x) in a periodic box (U = 20 m/s: the heat is 7e-5 of the
+// total energy, 1e9 times its round-off here): the kinetic energy decays at twice the velocity's
+// discrete rate; the internal energy takes what it loses to round-off; the entropy rises as the
+// discrete dissipation's pattern, each cell half of its two faces' nu (du / dx)^2 ~ cos^2(k x_face):
+// mean + cos(k dx) of it in cos(2 k x).
+TEST(IceViscosity, ShearWaveHeatsTheGasByTheKineticEnergyItLoses) {
+  const core::Scene s = viscousAirStrip("shear_wave_heat", 0.25);
+  const int n = 16;
+  const double U = 20.0, mu = 0.01, rho = 1.2, cv = 717.5;
+  ice::IceSolver sol(s, test::comm());
+  const double k = 2 * M_PI;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    sol.state().mat[0].vel(i, j, kk, 1) = U * std::sin(k * sol.mesh().cellCenter(0, i));
+  });
+  sol.computeEquilibriumPressure();
+  const auto& air = sol.state().mat[0];
+  auto entropy = [&](int i, int j, int kk) {  // ideal gas: cv ln(T / rho^(gamma - 1))
+    const double r = air.mass(i, j, kk) / sol.mesh().cellVolume();
+    return cv * std::log(air.eos->temperature(r, air.eint(i, j, kk)) / std::pow(r, 0.4));
+  };
+  std::vector<double> s0(static_cast<std::size_t>(sol.ownedBox().numPts()));
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    s0[static_cast<std::size_t>(sol.ownedBox().index(i, j, kk))] = entropy(i, j, kk);
+  });
+  const ice::Totals a = sol.totals();
+  test::runToEnd(sol, s.time.end);
+  const ice::Totals b = sol.totals();
+  const double dx = 1.0 / n, nu = mu / rho;
+  const double rate = nu * 4 * std::pow(std::sin(k * dx / 2), 2) / (dx * dx);
+  const double lost = a.kinetic - b.kinetic;
+  std::printf("  kinetic %.9e -> %.9e (exact decay %.9e), internal +%.9e, total %.12e -> %.12e\n", a.kinetic,
+              b.kinetic, a.kinetic * std::exp(-2 * rate * s.time.end), (b.energy - b.kinetic) - (a.energy - a.kinetic),
+              a.energy, b.energy);
+  EXPECT_NEAR(b.kinetic, a.kinetic * std::exp(-2 * rate * s.time.end), 2e-3 * lost);
+  EXPECT_NEAR(b.energy, a.energy, 1e-6 * lost) << "total energy conserved (the loss was " << lost << " J)";
+  EXPECT_NEAR((b.energy - b.kinetic) - (a.energy - a.kinetic), lost, 1e-6 * lost) << "the heat is the kinetic energy lost";
+  double mean = 0, c2 = 0, s2 = 0, ds = HUGE_VAL;  // entropy change: mean, its cos(2kx) part, smallest
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    const double d = entropy(i, j, kk) - s0[static_cast<std::size_t>(sol.ownedBox().index(i, j, kk))];
+    const double cx = std::cos(2 * k * sol.mesh().cellCenter(0, i));
+    mean += d;
+    c2 += d * cx;
+    s2 += cx * cx;
+    ds = std::min(ds, d);
+  });
+  mean = test::comm().sum(mean) / n;
+  c2 = test::comm().sum(c2) / test::comm().sum(s2);
+  std::printf("  entropy rise: mean %.6e J/(kg K), cos(2kx) part %.6e (ratio %.4f, expected cos(k dx) %.4f)\n", mean,
+              c2, c2 / mean, std::cos(k * dx));
+  EXPECT_GE(test::comm().min(ds), 0.0) << "no cell loses entropy";
+  EXPECT_NEAR(c2 / mean, std::cos(k * dx), 0.02);
+}
+
+// The same between no-slip walls (u_y = U sin(pi x), x = 0 and 1 walls): a wall at rest does no
+// work, so the heat is again exactly the kinetic energy lost (the wall faces' shear included).
+TEST(IceViscosity, NoSlipWallsAtRestDoNoWork) {
+  const core::Scene s = viscousAirStrip("shear_walls", 0.1, true);
+  ice::IceSolver sol(s, test::comm());
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    sol.state().mat[0].vel(i, j, kk, 1) = 20.0 * std::sin(M_PI * sol.mesh().cellCenter(0, i));
+  });
+  sol.computeEquilibriumPressure();
+  const ice::Totals a = sol.totals();
+  test::runToEnd(sol, s.time.end);
+  const ice::Totals b = sol.totals();
+  const double lost = a.kinetic - b.kinetic;
+  std::printf("  kinetic lost %.9e J, internal +%.9e J, total change %.3e J\n", lost,
+              (b.energy - b.kinetic) - (a.energy - a.kinetic), b.energy - a.energy);
+  ASSERT_GT(lost, 0.01 * a.kinetic) << "the walls and the viscosity slow the flow (1.6 % by 0.1 s)";
+  EXPECT_NEAR(b.energy, a.energy, 1e-6 * lost) << "total energy conserved";
 }
 
 // The semi-implicit pressure with Eigen's BiCGSTAB gives the matrix-free CG's solution.
