@@ -183,6 +183,11 @@ class IceSolver {
   /// Donor cells (per material and step, this rank's) whose outgoing face values advection
   /// blended toward their own to keep e and v positive (advection_phase.cpp, positivityBlend).
   [[nodiscard]] long positivityBlends() const { return positivityBlends_; }
+  /// The heat the viscous updates gave the fluids since this solver was built, this rank's owned
+  /// cells [J] (the kinetic energy they took; lagrangian_phase.cpp): the flow's viscous dissipation.
+  [[nodiscard]] double viscousHeat() const { return viscousHeat_; }
+  /// A fluid of the scene has a viscosity.
+  [[nodiscard]] bool viscous() const { return anyViscous_; }
   /// The energy those fallbacks added (energy_audit.h; the health check reads it).
   [[nodiscard]] const EnergyAudit& energyAudit() const { return audit_; }
   /// A fluid present in an owned cell whose sound speed at the last equilibrium, c^2 = v / kappa,
@@ -287,6 +292,7 @@ class IceSolver {
   core::StepCollapse collapse_{0.0};  // time.dt_collapse_fraction (step())
   double t_ = 0, dt_ = 0;
   long nsteps_ = 0, fallbacks_ = 0, positivityBlends_ = 0;
+  double viscousHeat_ = 0;  // viscousHeat()
   EnergyAudit audit_;
   /// The Lagrangian phase's correction of the cells with a solid, given after the momentum
   /// exchange with the drag heat (applyDeferredCorrection): stored and owned index, D [J], and the

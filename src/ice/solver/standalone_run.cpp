@@ -93,6 +93,12 @@ int runStandalone(const core::Scene& scene, const core::Comm& comm, std::ostream
   record.completed();
   progress.finish(static_cast<int>(solver.steps()), solver.time(), double(scene.mesh.numCells()), "cell-steps");
   if (comm.root() && solver.semiImplicit()) log << solver.pressureSolveSummary(solver.steps()) << "\n";
+  if (solver.viscous()) {
+    const double heat = comm.sum(solver.viscousHeat());  // collective
+    if (comm.root())
+      log << "viscous heat " << heat << " J (the kinetic energy the fluids' viscosity turned into heat, this process's "
+          << "steps)\n";
+  }
   if (comm.root() && writer) log << "output     " << writer->xdmfPath() << "\n";
   return 0;
 }

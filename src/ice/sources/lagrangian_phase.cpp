@@ -347,6 +347,7 @@ void IceSolver::computeSourcesAndLagrangian() {
               }
               e[c] += work;
               viscousSecond_[static_cast<std::size_t>(owned_.index(i, j, k))] -= mass[c] * second;
+              viscousHeat_ += mass[c] * (work - second);
             }
             e[c] += dt_ * m.conductivity * v * dT;
           }

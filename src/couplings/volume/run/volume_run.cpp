@@ -267,6 +267,13 @@ int runVolumeCoupling(const core::Scene& scene, const Sides& sides, Transport& t
           << " J of it went to the whole material in proportion to the particles' thermal energy\n"
           << std::flush;
   }
+  if (sides.fluid && sides.fluid->solver().viscous()) {
+    const double heat = comm.sum(sides.fluid->solver().viscousHeat());  // collective
+    if (comm.root())
+      log << "  fluid viscous heat: " << heat << " J (the kinetic energy the fluids' viscosity turned into heat, this "
+          << "process's steps)\n"
+          << std::flush;
+  }
   if (comm.root() && sides.solid) {
     log << "coupling: schedule " << core::name(scene.coupling.schedule) << ", " << iterations << " iterations in " << n
         << " steps (" << double(iterations) / double(std::max(1L, n)) << " per step), " << unconverged
