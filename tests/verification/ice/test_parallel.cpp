@@ -66,6 +66,17 @@ TEST(IceParallel, TwoD) {
   }
 }
 
+// Viscous air and water (the viscous update, its heat and the heat's second-order part shared by
+// heat capacity read the neighbours' start velocities across rank boundaries).
+TEST(IceParallel, TwoDViscous) {
+  core::Scene s = blast(2, "explicit");
+  s.materials[0].viscosity = 0.05;
+  s.materials[1].viscosity = 1e-3;
+  const double d = compare(s, 40);
+  if (test::comm().root()) std::printf("  2D viscous on %d ranks: max relative difference %.2e\n", test::comm().size(), d);
+  EXPECT_LT(d, 1e-10);
+}
+
 TEST(IceParallel, ThreeD) {
   const double d = compare(blast(3, "explicit"), 10);
   if (test::comm().root()) std::printf("  3D explicit on %d ranks: max relative difference %.2e\n", test::comm().size(), d);
