@@ -226,18 +226,29 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     dt = kSemiImplicitStepGrowth * lastBound_;
     growthBound = true;
   }
-  // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian) is
-  // stable for dt nu sum_d 2 / dx_d^2 <= 1, i.e. dt <= dx^2 / (2 dim nu) on a uniform mesh, with
+  // Explicit viscosity (computeSourcesAndLagrangian: forward Euler on the face fluxes of the
+  // Newtonian stress) is stable for dt nu lambda <= 2 (lambda below: dt <= 3 dx^2 / (14 nu) in 2D on
+  // a uniform mesh, 3 / 4 of the Laplacian's dx^2 / (2 dim nu) in 1D, 6 / 7 in 2D, 9 / 10 in 3D), with
   // nu = mu / rho the kinematic viscosity of every viscous fluid present in a cell (theta > kPresentFraction).
   // rho = m / (theta V), which is 1 / v at equilibrium; before the first equilibrium of a coupled
   // run (solids just placed) v may still be that of a trace that filled a solid cell (1e10 m^3/kg)
   // while m / (theta V) stays the cell's real mass.
   // The Riemann face pressure's dissipation (-Z du at faces in compression) is an explicit
   // diffusion of velocity too (nu = Z dx / rho): its rate R = max_cells sum_d (Z_lo + Z_hi) /
-  // (rho dx_d) adds to the viscous one, dt <= 1 / (2 nu sum_d dx_d^-2 + R). A velocity
+  // (rho dx_d) adds to the viscous one, dt <= 1 / (nu lambda / 2 + R). A velocity
   // checkerboard (one face in compression per cell and direction) keeps its amplitude there.
-  double inv2 = 0;
-  for (int d = 0; d < dim; ++d) inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
+  double inv2 = 0, maxInv2 = 0;
+  for (int d = 0; d < dim; ++d) {
+    inv2 += 1.0 / (mesh_.dx(d) * mesh_.dx(d));
+    maxInv2 = std::max(maxInv2, 1.0 / (mesh_.dx(d) * mesh_.dx(d)));
+  }
+  // The discrete Newtonian stress's largest decay rate over nu (computeSourcesAndLagrangian): for a
+  // Fourier mode with x_d = sin^2(k_d dx_d / 2) the operator is -nu [L I + M / 3], L = 4 sum_d x_d /
+  // dx_d^2 (the Laplacian), M = s s^T + diag(4 x_d^2 / dx_d^2) (s_d = sin(k_d dx_d) / dx_d, the
+  // central cross differences), whose largest eigenvalue is at most |s|^2 + max_d 4 x_d^2 / dx_d^2;
+  // L + that / 3 grows with every x_d, so the checkerboard x_d = 1 (s = 0) has the largest:
+  // lambda = 4 sum_d dx_d^-2 + (4/3) max_d dx_d^-2 (16/3 dx^-2 in 1D, 28/3 in 2D, 40/3 in 3D).
+  const double lambdaNu = 4.0 * inv2 + 4.0 / 3.0 * maxInv2;
   double rRate = 0, localR = 0;
   std::int64_t rCell = -1;
   if (riemannFacePressureOn()) {
@@ -253,9 +264,9 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     // A viscous fluid held to the cell's other materials by the momentum exchange does not diffuse
     // on its own: the exchange (implicit, after the Lagrangian phase) gives the momentum its
     // viscous update made to the whole cell. Its own velocity's deviation from the others', which
-    // the update multiplies by at most 1 - 4 dt nu_r sum_d dx_d^-2 (nu_r = mu / rho_r), the exchange
-    // divides by 1 + dt k_r, k_r = v_r sum_s theta_s K_rs; so with k_r >= 4 nu_r sum_d dx_d^-2, i.e.
-    // sum_s theta_s K_rs >= 4 mu sum_d dx_d^-2 (the density cancels), no step makes it grow, and
+    // the update multiplies by at most 1 - dt nu_r lambda (nu_r = mu / rho_r), the exchange
+    // divides by 1 + dt k_r, k_r = v_r sum_s theta_s K_rs; so with k_r >= nu_r lambda, i.e.
+    // sum_s theta_s K_rs >= mu lambda (the density cancels), no step makes it grow, and
     // what bounds the step is the cell's mixture: nu = mu theta_r V / M with M the cell's mass of
     // every material (summed over the fluids so held). A rarefied trace of a viscous liquid in a
     // solid's cells (nu_r = mu / rho_r ~ 1e2 m^2/s) no longer sets the step (docs/ice.md).
@@ -274,7 +285,7 @@ double IceSolver::stableTimeStep(StepBound* where) const {
         if (anyK_)
           for (int s = 0; s < nm; ++s)
             if (s != r && th[s][c] > kPresentFraction && ms[s][c] > 0) coupling += th[s][c] * momentumExchange(r, s);
-        if (coupling > 0 && coupling >= 4.0 * m.viscosity * inv2) {
+        if (coupling > 0 && coupling >= m.viscosity * lambdaNu) {
           if (M < 0) {
             M = 0;
             for (int s = 0; s < nm; ++s) M += std::max(ms[s][c], 0.0);
@@ -296,22 +307,22 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     });
     nu = comm_.max(localNu);
   }
-  const double diffusive = 2.0 * nu * inv2 + rRate;
+  const double diffusive = 0.5 * nu * lambdaNu + rRate;
   if (diffusive > 0 && 1.0 / diffusive < dt) {
     dt = 1.0 / diffusive;
     viscous = true;
   }
   if (where) {
     *where = {};
-    if (viscous && 2.0 * nu * inv2 >= rRate) {
-      where->limit = rRate > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (2 nu sum_d dx_d^-2 + R)"
-                               : "the ICE explicit viscous bound 1 / (2 nu sum_d dx_d^-2)";
+    if (viscous && 0.5 * nu * lambdaNu >= rRate) {
+      where->limit = rRate > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (nu lambda / 2 + R)"
+                               : "the ICE explicit viscous bound 2 / (nu lambda), lambda = 4 sum_d dx_d^-2 + (4/3) max_d dx_d^-2";
       where->here = localNu == nu;
       where->cell = nuCell;
       where->material = nuMaterial;
       where->value = nu;
     } else if (viscous) {
-      where->limit = nu > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (2 nu sum_d dx_d^-2 + R)"
+      where->limit = nu > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (nu lambda / 2 + R)"
                             : "the ICE Riemann face-pressure bound 1 / R";
       where->here = localR == rRate;
       where->cell = rCell;

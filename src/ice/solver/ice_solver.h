@@ -56,7 +56,8 @@ class IceSolver {
   /// One step of size min(stable, dt_max, t_end - t).
   void step();
   /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
-  /// and with viscous fluids also the explicit viscous bound 1 / (2 nu sum_d dx_d^-2), nu = mu / rho.
+  /// and with viscous fluids also the explicit viscous bound 2 / (nu lambda), lambda = 4 sum_d dx_d^-2 +
+  /// (4/3) max_d dx_d^-2 (the Newtonian stress's largest rate over nu), nu = mu / rho.
   /// It reads the equilibrium's compressibilities, whose array the Lagrangian phase fills with the
   /// Lagrangian specific volume when no external material is present (MaterialState::lagSpvol):
   /// ask between computeEquilibriumPressure and the Lagrangian phase, as step() and the coupler do.

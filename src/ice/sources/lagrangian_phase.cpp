@@ -294,6 +294,35 @@ void IceSolver::computeSourcesAndLagrangian() {
       double* e = m.eint.data();
       const double* mass = m.mass.data();
       const Eos& eos = *m.eos;
+      // The Newtonian stress is mu (grad u + grad u^T) - (2/3) mu (div u) I; mu lap(u), the part
+      // above, is its flux mu d_d u_q through a face normal to d. The rest, tau' / mu at the face
+      // between the cells lo and hi = lo + e_d:
+      //   normal:     (1/3) d_d u_d - (2/3) sum_{q != d} d_q u_q
+      //   tangential: d_q u_d (q != d)
+      // (summed over the faces: (mu / 3) grad(div u)). d_d u_d is the compact difference across the
+      // face; a tangential derivative is the mean of the two cells' central differences (one-sided
+      // beside a cell without the material, 0 with neither), so each face has one flux and
+      // momentum moves between its cells. The ghost layers, corners included, hold the boundary's
+      // values (a wall or symmetry plane then does no work: the face's mean velocity is 0 normal
+      // to it and d_q u_d flips sign in the mirror).
+      auto tangential = [&](std::int64_t x, int q, int comp) {
+        const std::int64_t p = x + stride[q], l = x - stride[q];
+        const bool hp = th[p] > 0, hl = th[l] > 0;
+        const double h = mesh_.dx(q);
+        if (hp && hl) return (us[comp][p] - us[comp][l]) / (2 * h);
+        if (hp) return (us[comp][p] - us[comp][x]) / h;
+        if (hl) return (us[comp][x] - us[comp][l]) / h;
+        return 0.0;
+      };
+      auto faceStress = [&](std::int64_t lo, std::int64_t hi, int d, double* g) {
+        double div = 0;  // the tangential part of div u at the face
+        for (int q = 0; q < dim; ++q) {
+          if (q == d) continue;
+          div += 0.5 * (tangential(lo, q, q) + tangential(hi, q, q));
+          g[q] = 0.5 * (tangential(lo, q, d) + tangential(hi, q, d));
+        }
+        g[d] = (us[d][hi] - us[d][lo]) / (3 * mesh_.dx(d)) - 2.0 / 3.0 * div;
+      };
       for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
         for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
           std::int64_t c = sb.index(owned_.lo[0], j, k);
@@ -310,28 +339,45 @@ void IceSolver::computeSourcesAndLagrangian() {
               for (int sgn = -1; sgn <= 1; sgn += 2) {
                 const std::int64_t n = c + sgn * stride[d];
                 // The face's share of the material is the smaller of its cells' (not their mean): a
-                // trace beside a full cell then diffuses at most at nu, so the explicit viscous bound
-                // dt <= dx^2 / (2 dim nu) holds in every cell (with the mean, a trace of theta got
-                // nu / (2 theta): a viscous filler's trace inside a solid's cells blew up at step 6).
-                const double tb = std::min(tc, th[n]) / tc / dx2[d];
-                if (visc) {
+                // trace beside a full cell then diffuses at most as a full cell does, so the explicit
+                // viscous bound (ice_solver.cpp, stableTimeStep) holds in every cell (with the mean, a
+                // trace of theta got nu / (2 theta): a viscous filler's trace inside a solid's cells
+                // blew up at step 6).
+                const double w = std::min(tc, th[n]) / tc;
+                const double tb = w / dx2[d];
+                if (visc && w > 0) {
                   double kn = 0;
                   for (int q = 0; q < dim; ++q) {
                     du[q] += tb * (us[q][n] - us[q][c]);
                     kn += 0.5 * us[q][n] * us[q][n];
                   }
                   dk += tb * (kn - kc);
+                  // The rest of the Newtonian stress (Stokes' hypothesis, no bulk viscosity): the
+                  // face's extra flux tau' / mu (faceStress below), outward from the lower cell; its
+                  // work at the face's mean velocity, as above.
+                  double g[3];
+                  if (sgn > 0) faceStress(c, n, d, g);
+                  else faceStress(n, c, d, g);
+                  const double a = sgn * w / mesh_.dx(d);
+                  double gu = 0;
+                  for (int q = 0; q < dim; ++q) {
+                    du[q] += a * g[q];
+                    gu += g[q] * (us[q][c] + us[q][n]);
+                  }
+                  dk += 0.5 * a * gu;
                 }
                 if (cond) dT += tb * (eos.temperature(1.0 / sv[n], es[n]) - Tc);
               }
             if (visc) {
               // Viscous heating. The face force F = m dt nu tb (u_n - u_c) (start velocities; m v tb
-              // is the same seen from both cells, so momentum moves between them) does the work
-              // F . (u_c + u_n) / 2 on the face's fluid: a total-energy flux that cancels between the
-              // two cells (a no-slip wall's ghost, -u, does no work). What the cell's kinetic energy
-              // does not take of it, exactly (its change u . du + du . du / 2 from its Lagrangian
-              // velocity u), is heat, in two parts: the fluid takes the first-order part
-              //   dt nu [lap(|u|^2 / 2) - u . lap(u)] = dt nu sum_faces tb |u_n - u_c|^2 / 2 (u = u_start),
+              // is the same seen from both cells, so momentum moves between them), and the rest of
+              // the stress's, F' = +-m dt nu (w / dx_d) tau' / mu, do the work (F + F') . (u_c + u_n) / 2
+              // on the face's fluid: a total-energy flux that cancels between the two cells (a no-slip
+              // wall's ghost, -u, does no work). What the cell's kinetic energy does not take of it,
+              // exactly (its change u . du + du . du / 2 from its Lagrangian velocity u), is heat, in
+              // two parts: the fluid takes the first-order part, half of its faces' (F + F') . (u_n -
+              // u_c) / m (u = u_start; the Laplacian's is dt nu sum_faces tb |u_n - u_c|^2 / 2, the
+              // rest's sums with it over the mesh to the stress's dissipation tau : grad u >= 0),
               // its dissipation; the second-order part -du . du / 2 goes to the cell's materials by
               // heat capacity below. Where the exchange holds the fluid to the cell's others and the
               // step is the mixture's (ice_solver.cpp, stableTimeStep), du overshoots the mixture's

@@ -1,9 +1,11 @@
-// The stable time step of ICE with viscous fluids: the explicit viscous bound
-// dt <= 1 / (2 nu sum_d dx_d^-2) (dx^2 / (2 dim nu) on a uniform mesh) when it is below the
-// convective-acoustic one, and nothing changes without viscosity. A velocity checkerboard, the
-// mode the explicit Laplacian amplifies first, keeps its amplitude at that step and grows beyond it.
+// The stable time step of ICE with viscous fluids: the explicit viscous bound dt <= 2 / (nu lambda),
+// lambda = 4 sum_d dx_d^-2 + (4/3) max_d dx_d^-2 (the Newtonian stress's largest discrete decay rate
+// over nu; 3 dx^2 / (14 nu) on a uniform 2D mesh) when it is below the convective-acoustic one, and
+// nothing changes without viscosity. A velocity checkerboard, the mode the explicit stress amplifies
+// first, keeps its amplitude at that step and grows beyond it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../../verification/ice/ice_test_scenes.h"
@@ -27,6 +29,12 @@ core::Scene checkerboardBox(double mu, double dy = 0.1, const char* facePressure
   // faces adds its own rate; the tests of the default below).
   s.ice.face_pressure = facePressure;
   return s;
+}
+
+// The viscous bound's rate nu lambda / 2 on a dx x dy mesh (its step is the inverse).
+double viscousRate(double nu, double dx, double dy) {
+  const double ix = 1 / (dx * dx), iy = 1 / (dy * dy);
+  return nu * (2 * (ix + iy) + 2.0 / 3.0 * std::max(ix, iy));
 }
 
 void setCheckerboard(ice::IceSolver& sol, double U) {
@@ -58,12 +66,12 @@ void stepWith(ice::IceSolver& sol, double dt) {
 }  // namespace
 
 TEST(IceTimeStep, ViscousBoundWhenBelowTheAcousticOne) {
-  // nu = mu / rho = 100 m^2/s: dx^2 / (2 dim nu) = 0.01 / 800 = 1.25e-5 s, below the acoustic
+  // nu = mu / rho = 100 m^2/s: 3 dx^2 / (14 nu) = 0.03 / 1400 = 2.14e-5 s, below the acoustic
   // 0.4 dx / (2 (|u| + c)) ~ 5.3e-5 s.
   ice::IceSolver sol(checkerboardBox(100.0), test::comm());
   setCheckerboard(sol, 1.0);
-  EXPECT_NEAR(sol.stableTimeStep(), 0.01 / (2 * 2 * 100.0), 1e-12 * 1.25e-5);
-  // Unequal spacing: 1 / (2 nu (1/dx^2 + 1/dy^2)).
+  EXPECT_NEAR(sol.stableTimeStep(), 3 * 0.01 / (14 * 100.0), 1e-12 * 2.14e-5);
+  // Unequal spacing: 1 / (nu (2 (1/dx^2 + 1/dy^2) + (2/3) / min(dx, dy)^2)).
   // The density is the cell's m / (theta V): a specific volume left over from an earlier
   // equilibrium (a trace that had filled a solid's cell before the solid arrived: 1e10 m^3/kg)
   // does not make the bound vanish.
@@ -72,7 +80,7 @@ TEST(IceTimeStep, ViscousBoundWhenBelowTheAcousticOne) {
   EXPECT_EQ(sol.stableTimeStep(), dt);
   ice::IceSolver thin(checkerboardBox(100.0, 0.05), test::comm());
   setCheckerboard(thin, 1.0);
-  EXPECT_NEAR(thin.stableTimeStep(), 1.0 / (2 * 100.0 * (100.0 + 400.0)), 1e-12 * 1e-5);
+  EXPECT_NEAR(thin.stableTimeStep(), 1.0 / (100.0 * (2 * (100.0 + 400.0) + 2.0 / 3.0 * 400.0)), 1e-12 * 1e-5);
 }
 
 TEST(IceTimeStep, UnchangedWithoutViscosityOrWhenTheAcousticBoundIsSmaller) {
@@ -81,18 +89,19 @@ TEST(IceTimeStep, UnchangedWithoutViscosityOrWhenTheAcousticBoundIsSmaller) {
   const double acoustic = inviscid.stableTimeStep();
   EXPECT_GT(acoustic, 4e-5);
   EXPECT_LT(acoustic, 6e-5);
-  ice::IceSolver weak(checkerboardBox(0.01), test::comm());  // viscous bound 0.125 s
+  ice::IceSolver weak(checkerboardBox(0.01), test::comm());  // viscous bound 0.214 s
   setCheckerboard(weak, 1.0);
   EXPECT_EQ(weak.stableTimeStep(), acoustic);
 }
 
-// With the default face pressure (riemann): at the step 1 / (2 nu sum_d dx_d^-2 + R) the
-// checkerboard's factor per step is -1 (viscosity and the Riemann dissipation together).
+// With the default face pressure (riemann): at the step 1 / (nu lambda / 2 + R) the checkerboard's
+// factor per step is -1 (viscosity and the Riemann dissipation together).
 TEST(IceTimeStep, CheckerboardKeepsItsAmplitudeAtTheViscousStepAndGrowsBeyond) {
   ice::IceSolver sol(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
   setCheckerboard(sol, 1.0);
   for (int n = 0; n < 50; ++n) sol.step();
-  // At the bound the checkerboard's factor per step is 1 - 8 nu dt / dx^2 = -1 (kept, not grown).
+  // At the bound the checkerboard's factor per step is 1 - dt (28 nu / (3 dx^2) + R) = -1 (kept,
+  // not grown): it is the mode of the largest rate (u_x on (-1)^(i+j): mu lap u and (mu / 3) d_x(div u)).
   EXPECT_LE(maxSpeed(sol), 1.0 + 1e-9);
   EXPECT_GT(maxSpeed(sol), 0.5);
   ice::IceSolver over(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
@@ -103,7 +112,7 @@ TEST(IceTimeStep, CheckerboardKeepsItsAmplitudeAtTheViscousStepAndGrowsBeyond) {
 }
 
 // The default face pressure (riemann): its dissipation -Z du at the faces in compression is an
-// explicit diffusion of velocity; the step is 1 / (2 nu sum_d dx_d^-2 + R), R = max over cells of
+// explicit diffusion of velocity; the step is 1 / (nu lambda / 2 + R), R = max over cells of
 // sum_d (Z_lo + Z_hi) / (rho dx_d). In the checkerboard u_x = +-U each cell has one face in
 // compression in x (none in y: u_y = 0), Z = W / 2, W = rho (c + Gamma |du|), |du| = 2 U.
 double riemannRate(const ice::IceSolver& sol, double U) {
@@ -116,7 +125,7 @@ double riemannRate(const ice::IceSolver& sol, double U) {
 TEST(IceTimeStep, RiemannFacePressureRateAddsToTheViscousOne) {
   ice::IceSolver sol(checkerboardBox(100.0, 0.1, "riemann"), test::comm());
   setCheckerboard(sol, 1.0);
-  const double R = riemannRate(sol, 1.0), visc = 2 * 100.0 * 2 / (0.1 * 0.1);
+  const double R = riemannRate(sol, 1.0), visc = viscousRate(100.0, 0.1, 0.1);
   EXPECT_NEAR(sol.stableTimeStep(), 1.0 / (visc + R), 1e-9 / (visc + R));
   EXPECT_NE(sol.stableTimeStepLimit().find("viscous + Riemann face-pressure"), std::string::npos)
       << sol.stableTimeStepLimit();
@@ -244,8 +253,8 @@ TEST(IceTimeStep, SemiImplicitWithTwoFluidsStartsFromTheExplicitStepAndGrows) {
 
 // A viscous fluid held to the cell's other materials by the momentum exchange: its viscous update
 // reaches the cell's velocity only through the exchange, so the step is bounded by the mixture's
-// nu = mu theta_r V / M, not by the fluid's own mu / rho_r, once sum_s theta_s K_rs >= 4 mu
-// sum_d dx_d^-2 (ice_solver.cpp, stableTimeStep). A periodic 8 x 8 box, 10 % of a gas of viscosity
+// nu = mu theta_r V / M, not by the fluid's own mu / rho_r, once sum_s theta_s K_rs >= mu lambda
+// (ice_solver.cpp, stableTimeStep). A periodic 8 x 8 box, 10 % of a gas of viscosity
 // mu = 1000 Pa s in 90 % of an inviscid one, both at rho = 1 (nu_r = 1000 m^2/s, the mixture's 100).
 namespace {
 core::Scene heldTraceBox(double K) {
@@ -274,20 +283,20 @@ double maxMixtureSpeed(const ice::IceSolver& sol) {
 }  // namespace
 
 TEST(IceTimeStep, AViscousFluidHeldByTheExchangeIsBoundedByTheMixture) {
-  const double inv2 = 2 / (0.1 * 0.1);
   ice::IceSolver held(heldTraceBox(1e15), test::comm());
   setHeldCheckerboard(held, 1.0);
-  const double mixture = 1.0 / (2 * 1000.0 * 0.1 * inv2);  // nu = mu theta / rho_mix = 100 m^2/s
+  const double mixture = 1.0 / viscousRate(100.0, 0.1, 0.1);  // nu = mu theta / rho_mix = 100 m^2/s
   EXPECT_NEAR(held.stableTimeStep(), mixture, 1e-9 * mixture);
   // Without the exchange the fluid diffuses on its own: nu = mu / rho_r = 1000 m^2/s.
+  const double own = 1.0 / viscousRate(1000.0, 0.1, 0.1);
   ice::IceSolver alone(heldTraceBox(0.0), test::comm());
   setHeldCheckerboard(alone, 1.0);
-  EXPECT_NEAR(alone.stableTimeStep(), 1.0 / (2 * 1000.0 * inv2), 1e-9 / (2 * 1000.0 * inv2));
-  // An exchange too weak to hold it (sum_s theta_s K_rs = 0.9 K below 4 mu sum_d dx_d^-2 = 8e5):
-  // its own bound.
+  EXPECT_NEAR(alone.stableTimeStep(), own, 1e-9 * own);
+  // An exchange too weak to hold it (sum_s theta_s K_rs = 0.9 K below mu lambda = 9.3e5): its own
+  // bound.
   ice::IceSolver weak(heldTraceBox(5e5), test::comm());
   setHeldCheckerboard(weak, 1.0);
-  EXPECT_NEAR(weak.stableTimeStep(), 1.0 / (2 * 1000.0 * inv2), 1e-9 / (2 * 1000.0 * inv2));
+  EXPECT_NEAR(weak.stableTimeStep(), own, 1e-9 * own);
   // The held fluid's checkerboard keeps its amplitude at the mixture's step (ten times the fluid's
   // own bound) and grows beyond it (factor 1 - 2.4 per step at 1.2 times it). Each step takes the
   // bound of the state it starts from: the mode's viscous heat goes to the viscous gas and the

@@ -77,6 +77,16 @@ TEST(IceParallel, TwoDViscous) {
   EXPECT_LT(d, 1e-10);
 }
 
+// The same in 3D: the stress's cross derivatives read the edge and corner ghosts of the ranks' boxes.
+TEST(IceParallel, ThreeDViscous) {
+  core::Scene s = blast(3, "explicit");
+  s.materials[0].viscosity = 0.05;
+  s.materials[1].viscosity = 1e-3;
+  const double d = compare(s, 10);
+  if (test::comm().root()) std::printf("  3D viscous on %d ranks: max relative difference %.2e\n", test::comm().size(), d);
+  EXPECT_LT(d, 1e-10);
+}
+
 TEST(IceParallel, ThreeD) {
   const double d = compare(blast(3, "explicit"), 10);
   if (test::comm().root()) std::printf("  3D explicit on %d ranks: max relative difference %.2e\n", test::comm().size(), d);
