@@ -312,9 +312,45 @@ double IceSolver::stableTimeStep(StepBound* where) const {
     dt = 1.0 / diffusive;
     viscous = true;
   }
+  // Explicit heat conduction (computeSourcesAndLagrangian: forward Euler on the face-flux Laplacian
+  // of T, weighted like the viscous one by the smaller theta) is stable for dt <= 1 / (2 alpha
+  // sum_d dx_d^-2), alpha = k / (rho cv) the thermal diffusivity of each conducting fluid present
+  // (theta > kPresentFraction; rho = m / (theta V), cv the EOS's de/dT). Before 6 Dec 2026 (evening)
+  // there was no such bound: a conducting gas on a fine mesh (the Becker shock's Prandtl 3/4 gas)
+  // diverged.
+  double alpha = 0, localAlpha = 0;
+  std::int64_t alphaCell = -1;
+  int alphaMaterial = -1;
+  bool conduction = false;
+  if (anyConduction_) {
+    forEach(owned_, [&](int i, int j, int k) {
+      const std::int64_t c = sb.index(i, j, k);
+      for (int r = 0; r < nm; ++r) {
+        const MaterialState& m = st_.mat[r];
+        if (m.external || !(m.conductivity > 0)) continue;
+        const double th = m.theta.data()[c], ms = m.mass.data()[c];
+        if (!(th > kPresentFraction && ms > 0)) continue;
+        const double a = m.conductivity * th * V / (ms * m.eos->cv());
+        if (a > localAlpha) localAlpha = a, alphaCell = c, alphaMaterial = r;
+      }
+    });
+    alpha = comm_.max(localAlpha);
+    if (alpha > 0 && 1.0 / (2.0 * alpha * inv2) < dt) {
+      dt = 1.0 / (2.0 * alpha * inv2);
+      conduction = true;
+      viscous = false;
+    }
+  }
   if (where) {
     *where = {};
-    if (viscous && 0.5 * nu * lambdaNu >= rRate) {
+    if (conduction) {
+      where->limit = "the ICE explicit conduction bound 1 / (2 alpha sum_d dx_d^-2), alpha = k / (rho cv)";
+      where->here = localAlpha == alpha;
+      where->cell = alphaCell;
+      where->material = alphaMaterial;
+      where->value = alpha;
+      where->conduction = true;
+    } else if (viscous && 0.5 * nu * lambdaNu >= rRate) {
       where->limit = rRate > 0 ? "the ICE explicit viscous + Riemann face-pressure bound 1 / (nu lambda / 2 + R)"
                                : "the ICE explicit viscous bound 2 / (nu lambda), lambda = 4 sum_d dx_d^-2 + (4/3) max_d dx_d^-2";
       where->here = localNu == nu;
@@ -376,7 +412,8 @@ std::string IceSolver::stableTimeStepLimit() const {
   os << " in cell (" << ijk[0] << "," << ijk[1] << "," << ijk[2] << ") at x = " << core::formatPoint(x, mesh_.dim())
      << " m";
   if (b.material >= 0) {
-    os << ", fluid '" << st_.mat[b.material].name << "', nu = " << b.value << " m^2/s";
+    os << ", fluid '" << st_.mat[b.material].name << "', " << (b.conduction ? "alpha" : "nu") << " = " << b.value
+       << " m^2/s";
   } else {
     if (b.riemann)
       os << ", R = sum_d (Z_lo + Z_hi) / (rho dx_d) = " << b.value << " 1/s; materials:";

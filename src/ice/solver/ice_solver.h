@@ -57,7 +57,8 @@ class IceSolver {
   void step();
   /// The stable step from the last equilibrium state: the convective-acoustic CFL bound (docs/ice.md),
   /// and with viscous fluids also the explicit viscous bound 2 / (nu lambda), lambda = 4 sum_d dx_d^-2 +
-  /// (4/3) max_d dx_d^-2 (the Newtonian stress's largest rate over nu), nu = mu / rho.
+  /// (4/3) max_d dx_d^-2 (the Newtonian stress's largest rate over nu), nu = mu / rho, and with
+  /// conducting fluids 1 / (2 alpha sum_d dx_d^-2), alpha = k / (rho cv).
   /// It reads the equilibrium's compressibilities, whose array the Lagrangian phase fills with the
   /// Lagrangian specific volume when no external material is present (MaterialState::lagSpvol):
   /// ask between computeEquilibriumPressure and the Lagrangian phase, as step() and the coupler do.
@@ -213,6 +214,7 @@ class IceSolver {
     int material = -1;
     bool riemann = false;  // the value is the Riemann dissipation rate (riemannDissipationRate)
     bool acoustic = false;  // the value is the explicit acoustic rate c sum_d 1 / dx_d
+    bool conduction = false;  // the value is the thermal diffusivity alpha (else a material's nu)
     double value = 0;
   };
   double stableTimeStep(StepBound* where) const;

@@ -322,3 +322,53 @@ TEST(IceTimeStep, AViscousFluidHeldByTheExchangeIsBoundedByTheMixture) {
   }
   EXPECT_GT(maxMixtureSpeed(over), 100.0);
 }
+
+// Heat conduction is explicit too: dt <= 1 / (2 alpha sum_d dx_d^-2), alpha = k / (rho cv). A
+// temperature checkerboard (T0 (1 +- 1e-4) at rest and one pressure) keeps its amplitude at that step and grows beyond
+// it. The gas (rho = 1, cv = 717.5) with k = 717500 W/(m K): alpha = 1000 m^2/s, the bound
+// 1 / (2 alpha 200) = 2.5e-6 s, below the acoustic one (~5e-5 s); alpha is the lighter cells'.
+namespace {
+core::Scene conductingBox(double k) {
+  core::Scene s = checkerboardBox(0.0);
+  s.materials[0].thermal_conductivity = k;
+  return s;
+}
+double temperatureCheckerboard(ice::IceSolver& sol, double a) {  // sets it when a > 0; returns max |T - mean| / mean
+  auto& m = sol.state().mat[0];
+  if (a > 0) {
+    const double V = sol.mesh().cellVolume();
+    core::forEach(sol.ownedBox(), [&](int i, int j, int k) {  // at one pressure: rho e fixed
+      const double f = (i + j) % 2 == 0 ? 1 + a : 1 - a;
+      m.eint(i, j, k) *= f;
+      m.mass(i, j, k) = 1.0 / f * V;
+    });
+    sol.computeEquilibriumPressure();
+  }
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  core::forEach(sol.ownedBox(), [&](int i, int j, int k) {
+    const double T = m.eos->temperature(1.0 / m.spvol(i, j, k), m.eint(i, j, k));
+    lo = std::min(lo, T), hi = std::max(hi, T);
+  });
+  lo = test::comm().min(lo), hi = test::comm().max(hi);
+  return (hi - lo) / (hi + lo);
+}
+}  // namespace
+
+TEST(IceTimeStep, ConductionBoundKeepsATemperatureCheckerboard) {
+  const double a = 1e-4, alpha = 717500.0 / 717.5 * (1 + a), bound = 1.0 / (2 * alpha * 2 / (0.1 * 0.1));
+  ice::IceSolver sol(conductingBox(717500.0), test::comm());
+  const double a0 = temperatureCheckerboard(sol, a);
+  EXPECT_NEAR(sol.stableTimeStep(), bound, 1e-6 * bound);
+  EXPECT_NE(sol.stableTimeStepLimit().find("conduction bound"), std::string::npos) << sol.stableTimeStepLimit();
+  EXPECT_NE(sol.stableTimeStepLimit().find("alpha = 1000.1"), std::string::npos) << sol.stableTimeStepLimit();
+  for (int n = 0; n < 50; ++n) sol.step();
+  EXPECT_LE(temperatureCheckerboard(sol, 0), a0 * (1 + 1e-3));
+  EXPECT_GT(temperatureCheckerboard(sol, 0), 0.5 * a0);
+  ice::IceSolver over(conductingBox(717500.0), test::comm());
+  temperatureCheckerboard(over, a);
+  for (int n = 0; n < 20; ++n) {
+    over.computeEquilibriumPressure();
+    stepWith(over, 1.2 * over.stableTimeStep());
+  }
+  EXPECT_GT(temperatureCheckerboard(over, 0), 10 * a0);
+}
