@@ -43,13 +43,16 @@ TEST(ExchangeDeclaration, FlapWithHeatExchangeMovesTheExchangeEnergy) {
             "flap: exchange_momentum(2) exchange_energy\n");
 }
 
-TEST(ExchangeDeclaration, NoExchangeCoefficientMeansNoExchangeIncrements) {
+// Without a momentum coefficient no momentum increment moves; the exchange energy always does (it
+// also carries the solids' share of the Lagrangian energy correction: with K = H = 0 not moving it
+// lost that share, MpmIceEnergyBudget's no-exchange variant).
+TEST(ExchangeDeclaration, NoMomentumCoefficientMeansNoMomentumIncrement) {
   core::Scene scene = core::loadScene(SEED_CYLINDER);
   scene.ice.exchange_momentum = 0;
   scene.ice.exchange_heat = 0;
   const FieldUses travel = agree(scene, solidDeclaration(scene), fluidDeclaration(scene));
   EXPECT_EQ(describeUses(travel.of(ExchangePoint::ExchangeIncrements, 0), ExchangePoint::ExchangeIncrements, "steel"),
-            "steel: nothing");
+            "steel: exchange_energy");
   scene.ice.exchange_heat = 1e3;  // heat alone: the energy increment, no momentum increment
   const FieldUses heat = agree(scene, solidDeclaration(scene), fluidDeclaration(scene));
   EXPECT_EQ(describeUses(heat.of(ExchangePoint::ExchangeIncrements, 0), ExchangePoint::ExchangeIncrements, "steel"),
