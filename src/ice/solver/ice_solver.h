@@ -307,6 +307,7 @@ class IceSolver {
   std::vector<DeferredCorrection> deferred_;
   std::vector<double> dragHeat_;  // exchange(): per owned cell, the drag heat [J]
   std::vector<double> viscousSecond_;  // computeSourcesAndLagrangian: per owned cell, the viscous updates' -m du.du/2 [J]
+  std::vector<double> viscousGrad_;  // computeSourcesAndLagrangian: a viscous fluid's d_q u_comp per stored cell
   void applyDeferredCorrection();
   std::vector<SoundSpeedViolation> soundBad_;  // soundSpeedViolations(): finishEquilibrium's
   std::array<InflowState, 6> inflow_{};

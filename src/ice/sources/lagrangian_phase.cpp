@@ -305,23 +305,43 @@ void IceSolver::computeSourcesAndLagrangian() {
       // momentum moves between its cells. The ghost layers, corners included, hold the boundary's
       // values (a wall or symmetry plane then does no work: the face's mean velocity is 0 normal
       // to it and d_q u_d flips sign in the mirror).
-      auto tangential = [&](std::int64_t x, int q, int comp) {
-        const std::int64_t p = x + stride[q], l = x - stride[q];
-        const bool hp = th[p] > 0, hl = th[l] > 0;
-        const double h = mesh_.dx(q);
-        if (hp && hl) return (us[comp][p] - us[comp][l]) / (2 * h);
-        if (hp) return (us[comp][p] - us[comp][x]) / h;
-        if (hl) return (us[comp][x] - us[comp][l]) / h;
-        return 0.0;
-      };
-      auto faceStress = [&](std::int64_t lo, std::int64_t hi, int d, double* g) {
-        double div = 0;  // the tangential part of div u at the face
+      // Each cell's differences d_q u_comp (q, comp < dim) once, over the owned cells and one layer
+      // around them (the faces' two cells), in viscousGrad_: dim * dim arrays of the stored box.
+      const std::int64_t nStored = sb.numPts();
+      auto grad = [&](int q, int comp) { return viscousGrad_.data() + (q * dim + comp) * nStored; };
+      if (visc && dim > 1) {
+        viscousGrad_.resize(static_cast<std::size_t>(dim * dim * nStored));
+        forEach(owned_.grow(1, dim), [&](int i, int j, int k) {
+          const std::int64_t x = sb.index(i, j, k);
+          for (int q = 0; q < dim; ++q) {
+            const std::int64_t p = x + stride[q], l = x - stride[q];
+            const bool hp = th[p] > 0, hl = th[l] > 0;
+            const double h = mesh_.dx(q);
+            for (int comp = 0; comp < dim; ++comp)
+              grad(q, comp)[x] = hp && hl ? (us[comp][p] - us[comp][l]) / (2 * h)
+                                 : hp     ? (us[comp][p] - us[comp][x]) / h
+                                 : hl     ? (us[comp][x] - us[comp][l]) / h
+                                          : 0.0;
+          }
+        });
+      }
+      auto tangential = [&](std::int64_t x, int q, int comp) { return grad(q, comp)[x]; };
+      // Adds a tau' / mu to du and returns tau' / mu . (u_lo + u_hi) (the work at the face's mean
+      // velocity, doubled). Component by component, into its own sum (added to the Laplacian's after
+      // the faces): a small array written element by element and read back two at a time (the
+      // Laplacian's vectorized loop) stalls the store forwarding.
+      auto faceStress = [&](std::int64_t lo, std::int64_t hi, int d, double a, double* du) {
+        double div = 0, gu = 0;  // the tangential part of div u at the face; the work
         for (int q = 0; q < dim; ++q) {
           if (q == d) continue;
           div += 0.5 * (tangential(lo, q, q) + tangential(hi, q, q));
-          g[q] = 0.5 * (tangential(lo, q, d) + tangential(hi, q, d));
+          const double g = 0.5 * (tangential(lo, q, d) + tangential(hi, q, d));
+          du[q] += a * g;
+          gu += g * (us[q][lo] + us[q][hi]);
         }
-        g[d] = (us[d][hi] - us[d][lo]) / (3 * mesh_.dx(d)) - 2.0 / 3.0 * div;
+        const double g = (us[d][hi] - us[d][lo]) / (3 * mesh_.dx(d)) - 2.0 / 3.0 * div;
+        du[d] += a * g;
+        return gu + g * (us[d][lo] + us[d][hi]);
       };
       for (int k = owned_.lo[2]; k <= owned_.hi[2]; ++k)
         for (int j = owned_.lo[1]; j <= owned_.hi[1]; ++j) {
@@ -332,6 +352,7 @@ void IceSolver::computeSourcesAndLagrangian() {
             const double v = sv[c];
             const double Tc = cond ? eos.temperature(1.0 / v, es[c]) : 0.0;
             double du[3] = {0, 0, 0}, dT = 0, dk = 0;
+            double dS[3] = {0, 0, 0};  // the stress's rest (faceStress), added to du after the faces
             double kc = 0;  // |u_start|^2 / 2 here
             if (visc)
               for (int q = 0; q < dim; ++q) kc += 0.5 * us[q][c] * us[q][c];
@@ -355,19 +376,12 @@ void IceSolver::computeSourcesAndLagrangian() {
                   // The rest of the Newtonian stress (Stokes' hypothesis, no bulk viscosity): the
                   // face's extra flux tau' / mu (faceStress below), outward from the lower cell; its
                   // work at the face's mean velocity, as above.
-                  double g[3];
-                  if (sgn > 0) faceStress(c, n, d, g);
-                  else faceStress(n, c, d, g);
                   const double a = sgn * w / mesh_.dx(d);
-                  double gu = 0;
-                  for (int q = 0; q < dim; ++q) {
-                    du[q] += a * g[q];
-                    gu += g[q] * (us[q][c] + us[q][n]);
-                  }
-                  dk += 0.5 * a * gu;
+                  dk += 0.5 * a * (sgn > 0 ? faceStress(c, n, d, a, dS) : faceStress(n, c, d, a, dS));
                 }
                 if (cond) dT += tb * (eos.temperature(1.0 / sv[n], es[n]) - Tc);
               }
+            for (int q = 0; q < dim; ++q) du[q] += dS[q];
             if (visc) {
               // Viscous heating. The face force F = m dt nu tb (u_n - u_c) (start velocities; m v tb
               // is the same seen from both cells, so momentum moves between them), and the rest of
