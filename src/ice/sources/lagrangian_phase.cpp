@@ -78,6 +78,7 @@ void IceSolver::computeSourcesAndLagrangian() {
   // In a cell with a solid the heat-capacity share of the correction waits for the momentum
   // exchange's drag heat (below; applyDeferredCorrection).
   const bool deferCorrection = anyK_ && nm >= 2;
+  const double* Kp = K_.data();  // the momentum exchange coefficients, nm x nm
   deferred_.clear();
   // One owned cell: stored index c, oc its index in the owned box (an external material's coupling
   // work and exchange energy), fls[d] the index of its low face normal to d. NM > 0:
@@ -197,6 +198,25 @@ void IceSolver::computeSourcesAndLagrangian() {
         C += P.m[c] * P.cv;
         solid = solid || (P.external && P.m[c] > 0);
       }
+      // How far a solid holds the cell's fluids in this step: the momentum exchange (K_rs > 0)
+      // removes the fraction 1 / (1 + beta_r) of fluid r's velocity relative to the solids, beta_r =
+      // dt sum_s K_rs theta_s v_r, and so 1 - 1 / (1 + beta_r)^2 of the relative motion's kinetic
+      // energy, which it returns as drag heat. D takes that kinetic energy back, and the two go
+      // together by heat capacity: the share phi (the largest over the cell's fluids; 1 at the
+      // default K = 1e15). The kinetic energy the drag leaves the fluids (1 - phi: all of it with
+      // K = 0) is theirs to pay, as in a cell of fluids alone (theta kappa); by heat capacity the
+      // solid paid it (a closed box with K = H = 0: the steel gave the gas 6948 J of its heat in
+      // 1000 steps, docs/coupling.md "Energy budget").
+      double phi = 0;
+      if (solid)
+        for (int r = 0; r < n; ++r) {
+          if (ptr[r].external || !(ptr[r].m[c] > 0)) continue;
+          double beta = 0;
+          for (int q = 0; q < n; ++q)
+            if (ptr[q].external && ptr[q].m[c] > 0) beta += dt * Kp[r * n + q] * ptr[q].th[c] * ptr[r].v[c];
+          const double keep = 1.0 / ((1.0 + beta) * (1.0 + beta));
+          phi = std::max(phi, std::isfinite(beta) ? 1.0 - keep : 1.0);
+        }
       // With the solids' own volume change given (their solvers' figure, dV_s): the cell's fluids
       // fill the rest of the cell's volume change, so the p dV work of the difference between dV_s
       // and the solids' share of the cell's (theta_s kappa_s / kbar of V dt div U, what the
@@ -232,16 +252,20 @@ void IceSolver::computeSourcesAndLagrangian() {
       // took 1e9 m/s in a step, D -2e6 J against a cell of 0.1 J of fluid energy; the fluids refused
       // their negative shares, took the drag heat, and the audit stopped the run (docs/slides.md
       // "Runs to 1 ms"). Together they are the cell's net p dV work less its kinetic energy change.
-      double Dr = D - thf * Dv;
-      if (solid && deferCorrection) {
-        deferred_.push_back({c, oc, Dr, C});  // C > 0: the solid has mass here
-        Dr = 0;
+      double Dr = D - thf * Dv, Dh = 0;  // Dh: the part by heat capacity (phi, above)
+      if (solid) {
+        Dh = phi * Dr;
+        Dr -= Dh;
+        if (deferCorrection && phi > 0) {
+          deferred_.push_back({c, oc, Dh, C});  // C > 0: the solid has mass here
+          Dh = 0;
+        }
       }
       ShareTaker takers[kMaxMaterials];
       double shares[kMaxMaterials];
       for (int r = 0; r < n; ++r) {
         const Ptr& P = ptr[r];
-        double share = (solid ? P.m[c] * P.cv / C : volumeShare(r)) * Dr;  // [J]
+        double share = P.m[c] * P.cv / C * Dh + volumeShare(r) * Dr;  // [J]
         if (Dv != 0 && !P.external) share += thf * volumeShare(r) / kf * Dv;
         shares[r] = share;
         takers[r] = {P.m[c], P.cv, &P.eL[c], ecL[r], P.external, P.external ? &P.dEn[oc] : nullptr};
@@ -251,8 +275,25 @@ void IceSolver::computeSourcesAndLagrangian() {
       // in proportion to their heat capacities; only what none of them can take is not conserved
       // (audited). Before, the whole share was audited: 1 % of the underwater scene's energy at
       // 2.5 mm cells (docs/slides.md).
-      const SharesGiven g = giveShares(n, takers, shares);
+      SharesGiven g = giveShares(n, takers, shares);
       fallbacks_ += g.refused;
+      // What the fluids of a cell with a solid could not take (a trace's share beyond its thermal
+      // energy) goes to the solids, by heat capacity.
+      if (g.lost != 0 && solid) {
+        double Cs = 0;
+        for (int r = 0; r < n; ++r)
+          if (ptr[r].external) Cs += ptr[r].m[c] * ptr[r].cv;
+        if (Cs > 0) {
+          for (int r = 0; r < n; ++r) {
+            const Ptr& P = ptr[r];
+            if (!P.external || !(P.m[c] > 0)) continue;
+            const double s2 = P.m[c] * P.cv / Cs * g.lost;
+            P.eL[c] += s2 / P.m[c];
+            P.dEn[oc] += s2;
+          }
+          g.lost = 0;
+        }
+      }
       if (g.lost != 0) audit_.add(g.lost, c, g.worst);  // the share of D not taken (audited)
     }
     if (anyGravity_)

@@ -19,7 +19,8 @@
 // particle-grid transfer, mpm.damping), B-spline + MUSL with heat exchange (the grid count asked
 // for, and auto: the models' count) and GIMP + USF with PIC and damping: their balance closes;
 // and no exchange at all (K = H = 0): the solids still take their share of the energy correction
-// through the exchange energy, so it must travel (it was not declared then: +1.6e-2 of the scale).
+// through the exchange energy, so it must travel (it was not declared then: +1.6e-2 of the scale);
+// with K = 0 and 1e3 the steel's heat stays (the gas pays for its own acceleration).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,7 +107,9 @@ TEST(MpmIceEnergyBudget, ClosedBoxSolidAtRestPressureJump1000Steps) {
                                0.0, 1e15},
                               {"gimp, USF, PIC, damping 100 1/s", "gimp", "usf", 0.0, 100.0, 0.0},
                               {"linear, USL, FLIP, stress_work material", "linear", "usl", 1.0, 0.0, 0.0, "material"},
-                              {"linear, USL, FLIP, no exchange (K = H = 0)", "linear", "usl", 1.0, 0.0, 0.0, "auto", 0.0}};
+                              {"linear, USL, FLIP, no exchange (K = H = 0)", "linear", "usl", 1.0, 0.0, 0.0, "auto", 0.0},
+                              {"linear, USL, FLIP, weak exchange (K = 1e3, H = 0)", "linear", "usl", 1.0, 0.0, 0.0, "auto",
+                               1e3}};
   for (const Variant& v : variants) {
     const Budget b = run(v, 1000);
     const double drift = (b.e1 - b.e0) / b.scale, closure = (b.balance1 - b.balance0) / b.scale;
@@ -130,6 +133,14 @@ TEST(MpmIceEnergyBudget, ClosedBoxSolidAtRestPressureJump1000Steps) {
       EXPECT_LT(std::abs(b.solid.integration), 1e-12 * b.scale) << v.name << ": stress work against the grid's";
     if (&v == &variants[0]) {
       EXPECT_LT(std::abs(drift), 1e-6) << v.name;
+    }
+    // Where the solid holds no fluid (K = 0) the gas pays for its own acceleration, not the
+    // solid's heat: measured -221 J (what the gas's traces inside the steel cannot take), 6.1e-4
+    // of the scale; by heat capacity the steel gave the gas 6948 J (1.9e-2), docs/coupling.md
+    // "Energy budget". (With K = 1e3 the drag's heat of the gas's slip through the steel is
+    // shared by heat capacity: the steel gains +1232 J, and the balance closes.)
+    if (v.momentum == 0) {
+      EXPECT_LT(std::abs(b.solid.heat - b.heat0), 1e-3 * b.scale) << v.name;
     }
     // Whatever MPM's numerics created, the exchanges created nothing: the drift is those terms.
     EXPECT_LT(std::abs(drift - b.solid.created() / b.scale), 1e-11) << v.name;
