@@ -3,7 +3,7 @@
 // solution, the fitted order, the overshoot behind each shock (% of the jump) and the stationary
 // contact's velocity. scripts/ice_shock_sweep.sh runs it for every setting (docs/ice.md).
 //   ice_shock_sweep [--advection A] [--limiter L] [--pressure P] [--face-pressure riemann|average]
-//                   [--equilibrium fixed_energy|with_work] [--theta W] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction,water_piston,air_shock,water_fan,moving_contact]
+//                   [--equilibrium fixed_energy|with_work] [--theta W] [--trace-mass-fraction Y] [--cfl C] [--cells 100,200,...] [--cases toro,water_air | sod,toro1,...,toro5,water_air,water_rarefaction,water_piston,air_shock,water_fan,moving_contact | neighbours,lax,slow_shock,...]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -64,6 +64,10 @@ int main(int argc, char** argv) {
   if (cases.find("air_shock") != std::string::npos) list.push_back(test::airShock());
   if (cases.find("water_fan") != std::string::npos) list.push_back(test::waterFan());
   if (cases.find("moving_contact") != std::string::npos) list.push_back(test::movingContact());
+  // "neighbours": every case of neighbourCases; or one by name.
+  for (const auto& c : test::neighbourCases())
+    if (cases.find("neighbours") != std::string::npos || ("," + cases + ",").find("," + c.name + ",") != std::string::npos)
+      list.push_back(c);
   for (const auto& c : list) {
     std::vector<double> err;
     std::vector<int> ns;
