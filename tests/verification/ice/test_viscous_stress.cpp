@@ -106,6 +106,82 @@ void expectNewtonianRate(int kx, int ky, double mu) {
   EXPECT_NEAR(visc.totalChange, 0.0, 1e-6 * visc.lost) << "total energy conserved";
   EXPECT_NEAR(measured / k2, exact / k2, 0.02 * exact / k2);
 }
+// 3D: air in a periodic unit cube of n^3 cells; a wave u = U e sin(k . x), k = 2 pi m (m integer),
+// polarization e (unit). Longitudinal (e along k: sound) or transverse (e normal to k: a shear
+// wave, steady without viscosity). Returns the energy ratio as above.
+Decay standingWave3(int n, const int m[3], const double e[3], double mu, double t) {
+  core::Scene s;
+  s.name = "viscous_wave_3d";
+  const double h = 1.0 / n;
+  s.mesh = core::Mesh(3, {0, 0, 0}, {h, h, h}, {n, n, n});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  s.time.end = t;
+  s.materials = {test::idealGas("air", kGamma, 717.5)};
+  s.materials[0].viscosity = mu;
+  s.geometry = {test::region("air", test::box({0, 0, 0}, {1, 1, 1}), {{"air", 1.0}}, kP, kRho)};
+  s.ice.face_pressure = "average";  // as viscousAirBox
+  ice::IceSolver sol(s, test::comm());
+  core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+    const double x[3] = {sol.mesh().cellCenter(0, i), sol.mesh().cellCenter(1, j), sol.mesh().cellCenter(2, kk)};
+    const double a = std::sin(2 * M_PI * (m[0] * x[0] + m[1] * x[1] + m[2] * x[2]));
+    for (int d = 0; d < 3; ++d) sol.state().mat[0].vel(i, j, kk, d) = a * e[d];
+  });
+  sol.computeEquilibriumPressure();
+  auto energy = [&]() {  // acoustic + kinetic, three components
+    const double c2 = kGamma * kP / kRho, V = sol.mesh().cellVolume();
+    const auto& M = sol.state().mat[0];
+    double E = 0;
+    core::forEach(sol.ownedBox(), [&](int i, int j, int kk) {
+      double u2 = 0;
+      for (int d = 0; d < 3; ++d) u2 += M.vel(i, j, kk, d) * M.vel(i, j, kk, d);
+      const double dp = sol.state().press(i, j, kk) - kP;
+      E += V * (0.5 * kRho * u2 + dp * dp / (2 * kRho * c2));
+    });
+    return test::comm().sum(E);
+  };
+  const double e0 = energy();
+  const ice::Totals a = sol.totals();
+  test::runToEnd(sol, t);
+  const ice::Totals b = sol.totals();
+  const double e1 = energy();
+  return {e1 / e0, b.energy - a.energy, (b.energy - b.kinetic) - (a.energy - a.kinetic), e0 - e1};
+}
+
+// The discrete stress's rate / nu for the mode k = 2 pi m on spacing h and polarization e, an
+// eigenvector of its symbol L I + M / 3 (the faces' normal differences and the tangential
+// derivatives, the mean of the two cells' central differences): L = 4 sum_d sin^2(k_d h / 2) / h^2,
+// M_qq = 4 sin^2(k_q h / 2) / h^2, M_qp = sin(k_q h) sin(k_p h) / h^2 (p != q).
+double discreteRate3(const int m[3], const double e[3], double h) {
+  double k[3], L = 0;
+  for (int d = 0; d < 3; ++d) k[d] = 2 * M_PI * m[d], L += 4 * std::pow(std::sin(k[d] * h / 2), 2) / (h * h);
+  double eMe = 0;
+  for (int q = 0; q < 3; ++q)
+    for (int p = 0; p < 3; ++p)
+      eMe += e[q] * e[p] *
+             (p == q ? 4 * std::pow(std::sin(k[q] * h / 2), 2) / (h * h) : std::sin(k[q] * h) * std::sin(k[p] * h) / (h * h));
+  return L + eMe / 3;
+}
+
+// A 3D mode against the discrete rate, within 2 %; the total energy conserved.
+void expectNewtonianRate3(const int m[3], const double e[3], double mu, const char* what) {
+  const int n = 16;
+  const double nu = mu / kRho, t = 0.01;
+  const Decay visc = standingWave3(n, m, e, mu, t), inv = standingWave3(n, m, e, 0.0, t);
+  const double measured = -std::log(visc.acoustic / inv.acoustic) / (2 * nu * t);
+  const double k2 = 4 * M_PI * M_PI * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+  double ek = 0;  // e . k / |k|: 1 longitudinal, 0 transverse
+  for (int d = 0; d < 3; ++d) ek += e[d] * 2 * M_PI * m[d] / std::sqrt(k2);
+  // The amplitude's rate: the operator's on a shear wave (all its energy kinetic), half of it on
+  // sound (half the time in the pressure, which the stress does not damp).
+  const double half = std::abs(ek) > 0.5 ? 0.5 : 1.0;
+  const double exact = half * discreteRate3(m, e, 1.0 / n);
+  const double continuous = half * (1.0 + ek * ek / 3);  // nu |k|^2 (4/3 / 2 sound, 1 shear)
+  std::printf("  %s: energy viscous %.6f, inviscid %.6f; rate / (nu |k|^2) %.4f (discrete %.4f, continuous %.4f)\n", what,
+              visc.acoustic, inv.acoustic, measured / k2, exact / k2, continuous);
+  std::printf("  energy: lost %.6e J, heat %.6e J, total change %.3e J\n", visc.lost, visc.heat, visc.totalChange);
+  EXPECT_NEAR(visc.totalChange, 0.0, 1e-6 * visc.lost) << what << ": total energy conserved";
+  EXPECT_NEAR(measured / k2, exact / k2, 0.02 * exact / k2) << what;
+}
 }  // namespace
 
 // Along x: the normal stress is (4/3) mu du/dx.
@@ -140,4 +216,15 @@ TEST(IceViscousStress, WallsAtRestDoNoWork) {
   ASSERT_GT(lost, 0.1 * a.kinetic);
   EXPECT_NEAR(b.energy, a.energy, 1e-6 * lost) << "total energy conserved";
   EXPECT_GT(sol.viscousHeat(), 0.0);
+}
+
+// 3D, k along the cube's diagonal (1, 1, 1): sound (e along k: every cross derivative d_q u_d of
+// the three pairs) and a shear wave (e = (1, -1, 0) / sqrt 2, normal to k: the stress's
+// tangential part alone, rate nu |k|^2).
+TEST(IceViscousStress, ThreeDSoundAndShearAlongTheDiagonalDecayAtTheNewtonianRates) {
+  const int m[3] = {1, 1, 1};
+  const double r3 = 1 / std::sqrt(3.0), r2 = 1 / std::sqrt(2.0);
+  const double along[3] = {r3, r3, r3}, across[3] = {r2, -r2, 0};
+  expectNewtonianRate3(m, along, 0.25, "sound along (1, 1, 1)");
+  expectNewtonianRate3(m, across, 0.25, "shear wave along (1, 1, 1), e = (1, -1, 0) / sqrt 2");
 }
