@@ -18,14 +18,17 @@ using namespace mpmice;
 
 namespace {
 
-core::MaterialSpec products() {
+core::MaterialSpec jwlProducts(double A, double B, double R1, double R2, double omega, double rho0) {
   core::MaterialSpec m;
   m.name = "products";
-  m.eos = test::modelSpec("jwl", {{"A", 371.2e9}, {"B", 3.231e9}, {"R1", 4.15}, {"R2", 0.95}, {"omega", 0.3},
-                                  {"reference_density", 1630}});
+  m.eos = test::modelSpec("jwl", {{"A", A}, {"B", B}, {"R1", R1}, {"R2", R2}, {"omega", omega}, {"reference_density", rho0}});
   m.specific_heat = 1000;
   return m;
 }
+// TNT's JWL (Dobratz's set: 1630 kg/m^3), the test's products.
+core::MaterialSpec products() { return jwlProducts(371.2e9, 3.231e9, 4.15, 0.95, 0.3, 1630); }
+// PETN's (1770 kg/m^3; the underwater scene's charge, configs/underwater_foam_2d.yaml).
+core::MaterialSpec petnProducts() { return jwlProducts(617.0e9, 16.926e9, 4.4, 1.2, 0.25, 1770); }
 
 core::MaterialSpec mgWater() {
   core::MaterialSpec m;
@@ -36,10 +39,12 @@ core::MaterialSpec mgWater() {
   return m;
 }
 
-void transmittedShock(const core::MaterialSpec& water, const char* label) {
-  const double x0 = 0.5, t = 60e-6;
-  const test::Primitive L{1630, 0, 1e10}, R{1000, 0, 1e5};
-  const auto eosL = ice::makeEos(products().eos, products().specific_heat);
+// The products (gas, state L) at rest against the water at 1 bar, to t.
+void transmittedShock(const core::MaterialSpec& water, const char* label, const core::MaterialSpec& gas = products(),
+                      test::Primitive L = {1630, 0, 1e10}, double t = 60e-6) {
+  const double x0 = 0.5;
+  const test::Primitive R{1000, 0, 1e5};
+  const auto eosL = ice::makeEos(gas.eos, gas.specific_heat);
   const auto eosR = ice::makeEos(water.eos, water.specific_heat);
   const test::GeneralRiemann ex(L, *eosL, R, *eosR, 1e3);
   const double pStar = ex.pStar(), S = ex.shockSpeed(+1), uStar = ex.uStar();
@@ -53,7 +58,7 @@ void transmittedShock(const core::MaterialSpec& water, const char* label) {
     s.mesh = core::Mesh(1, {0, 0, 0}, {1.0 / n, 1, 1}, {n, 1, 1});
     for (auto& b : s.boundary) b.type = core::BoundaryType::Outflow;
     s.time.end = t;
-    s.materials = {products(), water};
+    s.materials = {gas, water};
     s.geometry = {test::region("products", test::box({0, 0, 0}, {x0, 1, 1}), {{"products", 1.0}}, L.p, L.rho),
                   test::region("water", test::box({x0, -1, -1}, {2, 2, 2}), {{"water", 1.0}}, R.p, R.rho)};
     ice::IceSolver sol(s, test::comm());
@@ -88,6 +93,12 @@ void transmittedShock(const core::MaterialSpec& water, const char* label) {
 
 TEST(IceJwlWater, TransmittedShockInStiffenedWater) { transmittedShock(test::stiffenedGas("water", 4.4, 6e8), "stiffened-gas water"); }
 TEST(IceJwlWater, TransmittedShockInMieGruneisenWater) { transmittedShock(mgWater(), "Mie-Gruneisen water"); }
+
+// A neighbour (7 Dec 2026): PETN's products at the underwater scene's 13.7 GPa and 1770 kg/m^3
+// against Mie-Gruneisen water, to 40 us (the faster water shock stays on the mesh).
+TEST(IceJwlWater, PetnProductsAtTheUnderwaterScenesStateInMieGruneisenWater) {
+  transmittedShock(mgWater(), "PETN, Mie-Gruneisen water", petnProducts(), {1770, 0, 13.7e9}, 40e-6);
+}
 
 // The general solver against the closed-form one where both apply (stiffened gas | ideal gas).
 TEST(IceJwlWater, GeneralExactSolverMatchesTheClosedFormOne) {
