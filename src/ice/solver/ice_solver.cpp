@@ -323,16 +323,45 @@ double IceSolver::stableTimeStep(StepBound* where) const {
   int alphaMaterial = -1;
   bool conduction = false;
   if (anyConduction_) {
+    // As the held viscous fluid above: a conducting fluid held to the cell's other materials by the
+    // heat exchange (implicit, after the Lagrangian phase), which divides its temperature's
+    // deviation from theirs by 1 + dt h_r, h_r = sum_s theta_s H_rs / (rho_r cv_r), while its
+    // conduction multiplies it by at most 1 - dt alpha_r lambda_T (lambda_T = 4 sum_d dx_d^-2):
+    // with sum_s theta_s H_rs >= k lambda_T no step makes the deviation grow, and the cell's
+    // temperature diffuses with the mixture's alpha = k theta_r V / C, C the cell's heat capacity
+    // sum_s m_s cv_s (summed over the fluids so held). A rarefied conducting gas's trace in a
+    // solid's cells (alpha_r = k / (rho_r cv_r) without bound as rho_r -> 0) then sets no step.
+    const double lambdaT = 4.0 * inv2;
     forEach(owned_, [&](int i, int j, int k) {
       const std::int64_t c = sb.index(i, j, k);
+      double held = 0, heldMost = 0, C = -1;  // C: computed on first need
+      int heldMaterial = -1;
       for (int r = 0; r < nm; ++r) {
         const MaterialState& m = st_.mat[r];
         if (m.external || !(m.conductivity > 0)) continue;
         const double th = m.theta.data()[c], ms = m.mass.data()[c];
         if (!(th > kPresentFraction && ms > 0)) continue;
+        double coupling = 0;
+        if (anyH_)
+          for (int s = 0; s < nm; ++s) {
+            const MaterialState& o = st_.mat[s];
+            if (s != r && o.theta.data()[c] > kPresentFraction && o.mass.data()[c] > 0)
+              coupling += o.theta.data()[c] * H_[static_cast<std::size_t>(r * nm + s)];
+          }
+        if (coupling > 0 && coupling >= m.conductivity * lambdaT) {
+          if (C < 0) {
+            C = 0;
+            for (int s = 0; s < nm; ++s) C += std::max(st_.mat[s].mass.data()[c], 0.0) * st_.mat[s].eos->cv();
+          }
+          const double part = m.conductivity * th * V / C;
+          held += part;
+          if (part > heldMost) heldMost = part, heldMaterial = r;
+          continue;
+        }
         const double a = m.conductivity * th * V / (ms * m.eos->cv());
         if (a > localAlpha) localAlpha = a, alphaCell = c, alphaMaterial = r;
       }
+      if (held > localAlpha) localAlpha = held, alphaCell = c, alphaMaterial = heldMaterial;
     });
     alpha = comm_.max(localAlpha);
     if (alpha > 0 && 1.0 / (2.0 * alpha * inv2) < dt) {
