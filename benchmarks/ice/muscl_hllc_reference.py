@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A textbook scheme beside ICE on a shock tube (docs/ice.md "The neighbours"): MUSCL-Hancock
-(primitive variables, van Leer limiter) or first-order Godunov, both with the HLLC flux, one ideal
+(primitive variables; van Leer's limiter, or --limiter minmod / superbee) or first-order Godunov, both with the HLLC flux, one ideal
 gas, zero-gradient ends. Prints the largest density and pressure in the window behind the shock
 against the exact star state, in % of the shock's jump, as ice_shock_sweep measures ICE.
 
@@ -32,7 +32,16 @@ def hllc(g, rl, ul, pl, rr, ur, pr):
     return np.where(sl >= 0, fl, np.where(ss >= 0, fl + sl * (qsl - ql), np.where(sr > 0, fr + sr * (qsr - qr), fr)))
 
 
-def run(g, n, left, right, x0, t_end, second_order, cfl=0.4):
+def limited(a, b, limiter):
+    if limiter == "minmod":
+        return np.where(a * b > 0, np.sign(a) * np.minimum(np.abs(a), np.abs(b)), 0.0)
+    if limiter == "superbee":
+        s = np.sign(a)
+        return np.where(a * b > 0, s * np.maximum(np.minimum(2 * np.abs(a), np.abs(b)), np.minimum(np.abs(a), 2 * np.abs(b))), 0.0)
+    return np.where(a * b > 0, 2 * a * b / np.where(a + b == 0, 1, a + b), 0.0)  # van Leer
+
+
+def run(g, n, left, right, x0, t_end, second_order, cfl=0.4, limiter="van_leer"):
     dx = 1.0 / n
     x = (np.arange(n) + 0.5) * dx
     w = np.array([np.where(x < x0, left[k], right[k]) for k in range(3)])
@@ -47,7 +56,7 @@ def run(g, n, left, right, x0, t_end, second_order, cfl=0.4):
         wg = np.concatenate([wp[:, :1], wp[:, :1], wp, wp[:, -1:], wp[:, -1:]], axis=1)
         if second_order:
             a, b = wg[:, 1:-1] - wg[:, :-2], wg[:, 2:] - wg[:, 1:-1]
-            d = np.where(a * b > 0, 2 * a * b / np.where(a + b == 0, 1, a + b), 0.0)  # van Leer
+            d = limited(a, b, limiter)
             wc = wg[:, 1:-1]
             rc, uc, pc = wc
             half = 0.5 * dt / dx * np.array([uc * d[0] + rc * d[1], uc * d[1] + d[2] / rc, g * pc * d[1] + uc * d[2]])
@@ -74,11 +83,13 @@ def main():
     ap.add_argument("--cells", default="100,200,400")
     ap.add_argument("--star", type=v3, required=True)
     ap.add_argument("--window", type=v3, required=True)
+    ap.add_argument("--limiter", default="van_leer", choices=["van_leer", "minmod", "superbee"])
+    ap.add_argument("--cfl", type=float, default=0.4)
     a = ap.parse_args()
     rho_s, p_s = a.star
     for n in [int(c) for c in a.cells.split(",")]:
         for second in (False, True):
-            x, r, u, p = run(a.gamma, n, a.left, a.right, a.x0, a.t, second)
+            x, r, u, p = run(a.gamma, n, a.left, a.right, a.x0, a.t, second, a.cfl, a.limiter)
             m = (x > a.window[0]) & (x < a.window[1] + 5.0 / n)
             print("%-13s %5d cells: overshoot rho %+.2f %% p %+.2f %%" % (
                 "muscl-hancock" if second else "godunov", n, 100 * (r[m].max() - rho_s) / (rho_s - a.right[0]),
