@@ -286,7 +286,7 @@ class SceneDumper(yaml.SafeDumper):
 
 
 def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, room=3.0e-3, filler="surround",
-               beside_rho=BESIDE_RHO, n=2):
+               beside_rho=BESIDE_RHO, n=2, solid_transport=None):
     """The shipped scene as the open-cell variant: a window in the outer half wall, mesh h, plate at
     rate x a, to 70 % strain, `room` [m] of mesh beside the specimen, MPM's shape function `shape`
     (None: the shipped scene's); filled with the silicone at `viscosity` [Pa s] unless None, in the
@@ -355,6 +355,8 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     s["boundary"]["y+"] = {"type": "outflow", "pressure": P_AMBIENT}   # refills above the plate
     s["ice"] = {"advection": "first_order", "exchange": {"momentum": 1.0e15, "heat": 0}}
     s["coupling"] = {"schedule": "monolithic"}
+    if solid_transport:  # coupling.solid_transport (None: the scene's default, ice)
+        s["coupling"]["solid_transport"] = solid_transport
     # The coupled step needs a smaller CFL number than the empty lattice's: at the shipped 0.3 the
     # polymer particle at the window's upper corner, past which the liquid is squeezed out, rings
     # (|v| 20-40 m/s against the plate's 7, 200 MPa) until its stored stress work is negative and
@@ -419,7 +421,7 @@ def filled_study(args):
         for config, a, rho in SCENES:
             for mu in [None] + viscosities:
                 s = open_scene(config, a, args.mesh, args.rate, mu, args.filled_cfl, args.shape, args.room, args.filler,
-                               args.beside_density, n)
+                               args.beside_density, n, args.solid_transport)
                 path = os.path.join(out, s["scene"] + ".yaml")
                 yaml.dump(s, open(path, "w"), Dumper=SceneDumper, sort_keys=False)
                 exe = os.path.join(build, "mpm_solver", "mpm_solver") if mu is None else \
@@ -695,6 +697,8 @@ def main():
     # a = 4.0 mm, 1 Pa s); quadratic B-splines keep it quiet (docs/slides.md, "Filled lattices").
     ap.add_argument("--shape", default="bspline2", help="filled study: MPM shape function of every run, empty and filled")
     ap.add_argument("--room", type=float, default=9.0e-3, help="filled study: mesh beside the specimen [m]")
+    ap.add_argument("--solid-transport", choices=["ice", "mpm"], default=None,
+                    help="filled study: coupling.solid_transport of the filled runs (default: the scene's, ice)")
     ap.add_argument("--beside-density", type=float, default=BESIDE_RHO,
                     help="filled study, --filler pores: the buffer gas's density beside the specimen [kg/m^3]")
     ap.add_argument("--filler", choices=["surround", "pores"], default="pores",
