@@ -355,7 +355,7 @@ def open_scene(config, a, h, rate, viscosity=None, filled_cfl=None, shape=None, 
     s["boundary"]["y+"] = {"type": "outflow", "pressure": P_AMBIENT}   # refills above the plate
     s["ice"] = {"advection": "first_order", "exchange": {"momentum": 1.0e15, "heat": 0}}
     s["coupling"] = {"schedule": "monolithic"}
-    if solid_transport:  # coupling.solid_transport (None: the scene's default, ice)
+    if solid_transport:  # coupling.solid_transport (None: the scene's default, ice; the study passes mpm)
         s["coupling"]["solid_transport"] = solid_transport
     # The coupled step needs a smaller CFL number than the empty lattice's: at the shipped 0.3 the
     # polymer particle at the window's upper corner, past which the liquid is squeezed out, rings
@@ -697,8 +697,9 @@ def main():
     # a = 4.0 mm, 1 Pa s); quadratic B-splines keep it quiet (docs/slides.md, "Filled lattices").
     ap.add_argument("--shape", default="bspline2", help="filled study: MPM shape function of every run, empty and filled")
     ap.add_argument("--room", type=float, default=9.0e-3, help="filled study: mesh beside the specimen [m]")
-    ap.add_argument("--solid-transport", choices=["ice", "mpm"], default=None,
-                    help="filled study: coupling.solid_transport of the filled runs (default: the scene's, ice)")
+    ap.add_argument("--solid-transport", choices=["ice", "mpm"], default="mpm",
+                    help="filled study: coupling.solid_transport of the filled runs (mpm since 7 Dec 2026: with ice "
+                         "the polymer's heat drains into the silicone, docs/slides.md \"The layered column\")")
     ap.add_argument("--beside-density", type=float, default=BESIDE_RHO,
                     help="filled study, --filler pores: the buffer gas's density beside the specimen [kg/m^3]")
     ap.add_argument("--filler", choices=["surround", "pores"], default="pores",
