@@ -21,6 +21,18 @@
 // again so weighted). So each fluid's temperature change in this step becomes the fraction w (so
 // weighted) of the solids' change (their heat-capacity-weighted one, from the start of the step to
 // now) plus (1 - w) of its own: a trace follows the solids' adiabat, a real phase keeps its own.
+// The fluid's own change is measured over its whole cycle, from the temperature the step found
+// (after the last step's advection, before this step's equilibrium pressure: tempCycle, kept by
+// computeEquilibriumPressure), not from the equilibrium's volume: for a fluid with a cold energy
+// (a stiffened gas's p_inf / rho, water's and the products' cold curves) the equilibrium's volume
+// change at fixed energy moves its temperature by the cold energy's change, which the Lagrangian
+// volume change then takes back with work, so half the cycle showed a large temperature change the
+// whole cycle does not have. In the layered column (ten polymer layers in silicone,
+// tests/verification/coupled/layered_column.yaml with ICE's face transport) the silicone of the
+// mixed cells cooled in every Lagrangian phase and warmed in every equilibrium; measured over the
+// half, the rule paid it 55,700 J of the polymer's heat in 20 us against 273 J of kinetic energy
+// (the filled lattices' drain, docs/slides.md), over the whole cycle -290 J. An ideal gas's
+// temperature does not depend on its volume: its measure is unchanged.
 // The change, not the temperature: without heat exchange (ice.exchange.heat 0) a trace keeps its
 // offset from the solid's temperature, and drag heat shared at one temperature rise stays one
 // temperature rise (IceExchange.DragHeatIsSharedAtOneTemperatureRiseNotGivenToATrace). The heat
@@ -61,8 +73,10 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
       const double mass = m.mass.data()[c];
       if (m.external || !(mass > 0)) continue;
       double& e = m.eint.data()[c];  // a fluid's Lagrangian energy (its start-of-step one: eintStart)
-      const double dTown = m.eos->temperature(1.0 / m.lagSpvol().data()[c], e) -
-                           m.eos->temperature(1.0 / m.spvol.data()[c], m.eintStart.data()[c]);
+      const double T0 = m.tempCycle.npts() > 0 && std::isfinite(m.tempCycle.data()[c])
+                            ? m.tempCycle.data()[c]
+                            : m.eos->temperature(1.0 / m.spvol.data()[c], m.eintStart.data()[c]);
+      const double dTown = m.eos->temperature(1.0 / m.lagSpvol().data()[c], e) - T0;
       const double kf = m.kappa.data()[c];
       const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
       // Towards the heat-capacity-weighted mean change of the fluid and the solids, which the

@@ -73,6 +73,19 @@ void IceSolver::computeEquilibriumPressure() {
       }
     }
   }
+  // Coupled runs: each fluid's temperature as the step found it, from which the embedded-fluid
+  // rule measures its change over the whole cycle (trace_temperature.cpp); NaN where it has none.
+  if (anyExternal_)
+    for (MaterialState& m : st_.mat) {
+      if (m.external) continue;
+      if (m.tempCycle.npts() == 0) m.tempCycle = m.eint;
+      double* T = m.tempCycle.data();
+      const double *ms = m.mass.data(), *sv = m.spvol.data(), *es = m.eint.data();
+      ownedCells_.forEach([&](std::size_t, std::int64_t c) {
+        T[c] = ms[c] > 0 && sv[c] > 0 && std::isfinite(sv[c]) ? m.eos->temperature(1.0 / sv[c], es[c])
+                                                               : std::numeric_limits<double>::quiet_NaN();
+      });
+    }
   std::vector<const double*> rho, e;
   std::vector<double*> rhoMicro;
   for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile

@@ -49,6 +49,10 @@ struct MaterialState {
   /// conduction, and in coupled runs the embedded trace's temperature change; the velocity:
   /// viscosity, and the shock viscosity's stable step: its ghosts); empty otherwise.
   core::Field eintStart, velStart;
+  /// Coupled runs: a fluid's temperature as the step found it (after the last step's advection,
+  /// before this step's equilibrium pressure moved its volume), the start of the change the
+  /// embedded-fluid rule measures (trace_temperature.cpp); empty otherwise.
+  core::Field tempCycle;
   /// The Lagrangian velocity and internal energy (see above).
   core::Field& lagVel() { return external ? velL : vel; }
   const core::Field& lagVel() const { return external ? velL : vel; }

@@ -2,12 +2,19 @@
 // lattices of issue 16, polymer layers and silicone converging on a symmetry plane in a closed
 // column. Nothing heats or cools the polymer in the exact problem (linear elastic, no heat
 // exchange), so its heat m cv T is a measure of the coupling's energy bookkeeping: whatever the
-// mixed cells' correction gives it or takes from it. Asserted with MPM's face transport of the
-// solid's volume (the scene's `coupling.solid_transport: mpm`): the polymer's heat changes by less
-// than 5 times the column's initial kinetic energy (measured +725 J against 273 J, the mean
-// temperature +0.14 K) and the total energy is conserved. ICE's face transport (`ice`, the
-// default) is printed, not asserted: the polymer's heat fed the silicone, -48,990 J (180 times the
-// kinetic energy, -9.2 K), the drain that stops the filled lattices (docs/slides.md).
+// mixed cells' correction gives it or takes from it. With MPM's face transport of the solid's
+// volume (the scene's `coupling.solid_transport: mpm`) the polymer's heat changes by less than 5
+// times the column's initial kinetic energy (measured +546 J against 273 J; +725 J before the
+// fix below) and the total energy is conserved. With ICE's face transport (`ice`, the default)
+// the polymer's heat fed the silicone, -48,990 J (180 times the kinetic energy, -9.2 K), the
+// drain that stopped the filled lattices (docs/slides.md): the embedded-fluid rule
+// (src/ice/exchange/trace_temperature.cpp) measured the silicone's temperature change over the
+// Lagrangian phase alone, where the stiffened gas's cold energy showed a cooling the equilibrium
+// pressure's compression had given back, and paid it from the polymer every step (+55,700 J
+// summed over the run). Measured over the whole step (7 Dec 2026) `ice` gives +4,824 J: no drain
+// (asserted: not below -5 times the kinetic energy), but the polymer still takes 18 times the
+// kinetic energy as heat from ICE's correction and drag in the mixed cells (asserted within 30
+// times, the drain's 180 outside it), where `mpm` takes 2.0 times.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,7 +56,13 @@ TEST(LayeredColumn, MpmFaceTransportKeepsThePolymersHeat) {
   EXPECT_LT(std::abs(mpm.heatChange), 5 * mpm.kinetic0);
   // Closed: the energy changes only by what MPM's own numerics name (the monitor's balance).
   EXPECT_NEAR(mpm.totalChange, mpm.created, 1e-9 * (mpm.kinetic0 + std::abs(mpm.internalChange)) + 1e-6);
-  runColumn("ice");  // printed: the drain of the filled lattices
+}
+
+TEST(LayeredColumn, IcesFaceTransportDoesNotDrainThePolymer) {
+  const ColumnBudget ice = runColumn("ice");
+  EXPECT_GT(ice.heatChange, -5 * ice.kinetic0) << "the polymer's heat drains into the silicone";
+  EXPECT_LT(std::abs(ice.heatChange), 30 * ice.kinetic0);
+  EXPECT_NEAR(ice.totalChange, ice.created, 1e-9 * (ice.kinetic0 + std::abs(ice.internalChange)) + 1e-6);
 }
 
 }  // namespace

@@ -487,6 +487,7 @@ TEST(IceExchange, AnEmbeddedTraceFollowsTheSolidsCoolingButNotBelowZeroKelvin) {
     core::forEach(owned, [&](int i, int j, int k) {  // the air at airT, no change of its own this step
       air.eint(i, j, k) = cvAir * airT;
       air.eintStart(i, j, k) = cvAir * airT;
+      air.tempCycle(i, j, k) = airT;  // as the step found it (before the equilibrium pressure)
     });
     std::vector<double> E(n), mom(3 * n, 0.0);
     const auto& steel = sol.state().mat[1];
@@ -511,6 +512,76 @@ TEST(IceExchange, AnEmbeddedTraceFollowsTheSolidsCoolingButNotBelowZeroKelvin) {
       EXPECT_NEAR(sol.exchangeEnergy(1)(i, j, k) + airHeat, 0.0, 1e-12 * std::abs(airHeat) + 1e-30) << "cell " << i;
     });
   }
+}
+
+// A liquid that is a real phase of a solid's cell keeps its own adiabat over the whole step: the
+// embedded-fluid rule (trace_temperature.cpp) measures its temperature change from where the step
+// found it, before the equilibrium pressure moved its volume at fixed energy. For a stiffened gas
+// (T = (e - p_inf v) / cv) that volume change moves its temperature by p_inf dv / cv, which the
+// Lagrangian phase's expansion back, with work, takes away again: over the cycle the liquid
+// changed by -p dv / cv only. Measured over the Lagrangian phase alone (as before 7 Dec 2026) the
+// rule saw -(p + p_inf) dv / cv and paid the liquid that from the solid, every step: in the
+// layered column's mixed cells (tests/verification/coupled) 55,700 J of the polymer's heat in
+// 20 us. Here a polymer-like solid (K 2.78 GPa, 1180 kg/m^3) fills 0.8 of each cell, silicone the
+// rest at 50 MPa (the filled lattices' materials); the step finds the silicone 1e-4 above its
+// equilibrium volume (0.1 %), the equilibrium takes that back, and its Lagrangian phase is set to the
+// adiabatic expansion to the found volume: the solid may pay at most the cycle's own work, m p dv
+// (measured 0.36 times it; before, 4.3 times), and the silicone ends between its found temperature
+// less p dv / cv and its found temperature (-0.022 K, the cycle's -0.034 K moved part way to the
+// solid's 0; before, +0.113 K).
+TEST(IceExchange, AnEmbeddedLiquidKeepsItsOwnAdiabatOverTheWholeStep) {
+  core::Scene s;
+  s.name = "liquid_in_polymer";
+  s.mesh = core::Mesh(1, {0, 0, 0}, {0.1, 1, 1}, {4, 1, 1});
+  for (auto& b : s.boundary) b.type = core::BoundaryType::Periodic;
+  core::MaterialSpec polymer = test::externalSteel();
+  polymer.name = "polymer";
+  polymer.eos.params = {{"bulk_modulus", 2.78e9}, {"threshold_pressure", 5e7}, {"reference_density", 1180}};
+  polymer.specific_heat = 1500;
+  s.materials = {test::stiffenedGas("silicone", 1.62, 548765432.0987654, 1500.0), polymer};
+  s.geometry = {test::region("silicone", test::box({0, 0, 0}, {1, 1, 1}), {{"silicone", 1.0}}, 5e7, 970.0)};
+  s.ice.exchange_momentum = 1e15;
+  ice::IceSolver sol(s, test::comm());
+  const auto& owned = sol.ownedBox();
+  const std::size_t n = static_cast<std::size_t>(owned.numPts());
+  const double V = sol.mesh().cellVolume(), v0 = 1.0 / 1180.0;
+  std::vector<double> mass(n, 0.8 * V / v0), vel(3 * n, 0.0), T(n, 300.0), sv(n, v0);
+  sol.setExternalMaterialState(1, mass, vel, T, sv);
+  sol.fitFluidsToExternalVolume();
+  sol.computeEquilibriumPressure();
+  auto& liq = sol.state().mat[0];
+  const auto& eos = *liq.eos;
+  const double veq = liq.spvol(0, 0, 0), dv = 1e-3 * veq, e0 = liq.eint(0, 0, 0), p = sol.pressure()(0, 0, 0);
+  ASSERT_GT(liq.theta(0, 0, 0), 0.15) << "the silicone is a real phase of the cell";
+  core::forEach(owned, [&](int i, int j, int k) { liq.spvol(i, j, k) = veq + dv; });  // as the step found it
+  const double Tfound = eos.temperature(1.0 / (veq + dv), e0);
+  sol.computeEquilibriumPressure();  // back to veq at e0: the cold energy's share warms it
+  EXPECT_NEAR(liq.spvol(0, 0, 0), veq, 1e-9 * veq);
+  EXPECT_GT(eos.temperature(1.0 / veq, e0) - Tfound, 0.3) << "the equilibrium's fixed-energy compression";
+  toFacePressure(sol, 1e-8);
+  sol.computeSourcesAndLagrangian();  // at rest: no volume change of its own
+  const double eL = e0 - p * dv;      // the Lagrangian expansion back to the found volume, with work
+  core::forEach(owned, [&](int i, int j, int k) {
+    liq.lagSpvol()(i, j, k) = veq + dv;
+    liq.eint(i, j, k) = eL;
+  });
+  const auto& solid = sol.state().mat[1];
+  std::vector<double> E(n), mom(3 * n, 0.0);
+  core::forEach(owned, [&](int i, int j, int k) {
+    E[static_cast<std::size_t>(owned.index(i, j, k))] = solid.mass(i, j, k) * solid.eint(i, j, k);  // no change
+  });
+  sol.setExternalLagrangianMomentum(1, mom);
+  sol.setExternalLagrangianEnergy(1, E);
+  sol.exchange();
+  core::forEach(owned, [&](int i, int j, int k) {
+    const double m = liq.mass(i, j, k), Tend = eos.temperature(1.0 / (veq + dv), liq.eint(i, j, k));
+    const double cycle = p * dv / eos.cv();  // the cycle's own cooling [K]
+    EXPECT_LT(std::abs(sol.exchangeEnergy(1)(i, j, k)), m * p * dv) << "cell " << i << ": the solid pays at most the cycle's work";
+    EXPECT_GE(Tend, Tfound - cycle - 1e-9) << "cell " << i;
+    EXPECT_LE(Tend, Tfound + 1e-9) << "cell " << i << ": found at " << Tfound << " K";
+    // Energy conserved: what the silicone took, the solid gave.
+    EXPECT_NEAR(sol.exchangeEnergy(1)(i, j, k) + m * (liq.eint(i, j, k) - eL), 0.0, 1e-9 * m * p * dv) << "cell " << i;
+  });
 }
 
 namespace {
