@@ -12,15 +12,24 @@
 // and the fluid is embedded in it; where w ~ 0 the fluid is the cell's compliance. The crossover is
 // at theta_f ~ kappa_s / kappa_f (p / K_s, 1e-6 for air against copper), so a gas fraction of 1e-3
 // keeps its own temperature to 1e-3 and a trace of 1e-10 follows the solid's to 1e-4. A fluid
-// stiffer than the solids beside it (water against soft rubber, kappa_f ~ 1e-3 kappa_s) is never
+// stiffer than the solids beside it (water against soft rubber, kappa_f ~ 1e-3 kappa_s) is not
 // pumped: it takes less than its volume's share of a volume change; yet there w ~ 1 wherever the
-// rubber is (it is the cell's compliance), so w is weighted by kappa_f / (kappa_f + kappa_s)
-// (kappa_s the solids' volume-mean compressibility): ~1 for a gas against a metal (7e-6 against
-// 7e-12 1/Pa), ~1e-3 for water against the added-mass rubber (K = 2 MPa), whose temperature changes
-// the water followed with w alone: the added-mass period went from -0.10 % to +0.74 % (-0.10 %
-// again so weighted). So each fluid's temperature change in this step becomes the fraction w (so
-// weighted) of the solids' change (their heat-capacity-weighted one, from the start of the step to
-// now) plus (1 - w) of its own: a trace follows the solids' adiabat, a real phase keeps its own.
+// rubber is (it is the cell's compliance): the water followed the rubber's temperature changes with
+// w alone and the added-mass period went from -0.10 % to +0.74 %. So w is weighted by how far the
+// fluid is pumped: the fraction g = 1 - 1 / A of its volume change that exceeds the mean (0 where
+// A <= 1), A its amplification, the larger of kappa_f / kbar (its relative volume change over the
+// cell's, by the theta-kappa split of the Lagrangian phase) and kappa_f / kappa_fluids (the
+// fluids' volume-mean compressibility: the split of the fluids' fill of a solid's own volume change,
+// Dv in lagrangian_phase.cpp, which goes by theta kappa among the fluids alone). A gas trace in a
+// metal: A ~ 1e6, g ~ 1. Water beside the added-mass rubber: A = 1 (the only fluid; 1e-3 against
+// the rubber), g = 0. Detonation products (kappa 3e-9 1/Pa) as a trace in a crushable foam's cell
+// (kappa 3e-8) with water (4.5e-10): A ~ 7 by the fluids' fill, g ~ 0.85. Before 7 Dec 2026 the
+// weight was kappa_f / (kappa_f + kappa_s), against the solids only: 0.1 for the products there,
+// whose trace the fill's work (Dv) then cooled below 0 K in every foam model but the water-filled
+// one (docs/slides.md "Runs to 1 ms"; each now runs to 1 ms). So each fluid's temperature change
+// in this step becomes the fraction w g of the solids' change (their heat-capacity-weighted one,
+// from the start of the step to now) plus (1 - w g) of its own: a trace follows the solids'
+// adiabat, a real phase keeps its own.
 // The fluid's own change is measured over its whole cycle, from the temperature the step found
 // (after the last step's advection, before this step's equilibrium pressure: tempCycle, kept by
 // computeEquilibriumPressure), not from the equilibrium's volume: for a fluid with a cold energy
@@ -39,6 +48,7 @@
 // comes from the solids in proportion to their heat capacities (for a trace, ~1e-13 of theirs), so
 // energy is conserved, and the solids' part goes to their solver with the exchange increments
 // (dEnergy).
+#include <algorithm>
 #include <cmath>
 
 #include "ice/ice_constants.h"
@@ -53,13 +63,13 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
   const core::Box& sb = st_.press.box();
   forEach(owned_, [&](int i, int j, int k) {
     const std::int64_t c = sb.index(i, j, k);
-    double kbar = 0, ks = 0, thetaS = 0, Cs = 0, CsdTs = 0;
+    double kbar = 0, ks = 0, Cs = 0, CsdTs = 0, kf = 0, thetaF = 0;
     for (const MaterialState& m : st_.mat) {
       const double tk = m.theta.data()[c] * m.kappa.data()[c];
       kbar += tk;
+      if (!m.external && m.mass.data()[c] > 0) kf += tk, thetaF += m.theta.data()[c];
       if (!m.external || !(m.mass.data()[c] > 0)) continue;
       ks += tk;
-      thetaS += m.theta.data()[c];
       const double C = m.mass.data()[c] * m.eos->cv();
       Cs += C;
       CsdTs += C * (m.eos->temperature(1.0 / m.lagSpvol().data()[c], m.eintL.data()[c]) -
@@ -67,7 +77,7 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
     }
     // A cavitated liquid (kbar = inf) takes the cell's whole volume change: the solids carry none.
     if (!(Cs > 0) || !(kbar > 0) || std::isinf(kbar)) return;
-    const double w = ks / kbar, dTs = CsdTs / Cs, kappaS = thetaS > 0 ? ks / thetaS : 0.0;
+    const double w = ks / kbar, dTs = CsdTs / Cs, kappaF = thetaF > 0 ? kf / thetaF : 0.0;
     double Q = 0;  // heat [J] the fluids take from the solids
     for (MaterialState& m : st_.mat) {
       const double mass = m.mass.data()[c];
@@ -77,8 +87,10 @@ void IceSolver::relaxEmbeddedFluidTemperatures() {
                             ? m.tempCycle.data()[c]
                             : m.eos->temperature(1.0 / m.spvol.data()[c], m.eintStart.data()[c]);
       const double dTown = m.eos->temperature(1.0 / m.lagSpvol().data()[c], e) - T0;
-      const double kf = m.kappa.data()[c];
-      const double wf = kf > 0 ? w * kf / (kf + kappaS) : 0.0;  // a fluid stiffer than the solid keeps its own
+      // How far it is pumped (above): a fluid no more compressible than its cell and its fluids keeps its own.
+      const double kr = m.kappa.data()[c];
+      const double A = std::max(kr / kbar, kappaF > 0 ? kr / kappaF : 0.0);
+      const double wf = A > 1 ? w * (1.0 - 1.0 / A) : 0.0;
       // Towards the heat-capacity-weighted mean change of the fluid and the solids, which the
       // solids pay: for a trace (Cf ~ 1e-13 Cs) the solids' change, as above; for a fluid with a
       // heat capacity like the solids' both meet between their own changes, so neither goes past
