@@ -22,11 +22,12 @@
 // fluids' volume-mean compressibility: the split of the fluids' fill of a solid's own volume change,
 // Dv in lagrangian_phase.cpp, which goes by theta kappa among the fluids alone). A gas trace in a
 // metal: A ~ 1e6, g ~ 1. Water beside the added-mass rubber: A = 1 (the only fluid; 1e-3 against
-// the rubber), g = 0. Detonation products (kappa 3e-9 1/Pa) as a trace in a crushable foam's cell
-// (kappa 3e-8) with water (4.5e-10): A ~ 7 by the fluids' fill, g ~ 0.85. Before 7 Dec 2026 the
-// weight was kappa_f / (kappa_f + kappa_s), against the solids only: 0.1 for the products there,
-// whose trace the fill's work (Dv) then cooled below 0 K in every foam model but the water-filled
-// one (docs/slides.md "Runs to 1 ms"; each now runs to 1 ms). So each fluid's temperature change
+// the rubber), g = 0. Detonation products as a trace (theta 1.3e-5, kappa 5e-9 .. 1.7e-8 1/Pa) in a
+// crushable foam's cell (kappa 6e-9 .. 1.7e-8) with water (3e-10; the strengthless foam's cell
+// (34,0), 294-348 us): A 18-49 by the fluids' fill, g 0.94-0.98. Before 7 Dec 2026 the weight was
+// kappa_f / (kappa_f + kappa_s), against the solids only: 0.45-0.50 there, and the fill's work (Dv)
+// cooled that trace below 0 K in every foam model but the water-filled one (docs/slides.md "Runs to
+// 1 ms"; each now runs to 1 ms). So each fluid's temperature change
 // in this step becomes the fraction w g of the solids' change (their heat-capacity-weighted one,
 // from the start of the step to now) plus (1 - w g) of its own: a trace follows the solids'
 // adiabat, a real phase keeps its own.
