@@ -74,18 +74,24 @@ void IceSolver::computeEquilibriumPressure() {
     }
   }
   // Coupled runs: each fluid's temperature as the step found it, from which the embedded-fluid
-  // rule measures its change over the whole cycle (trace_temperature.cpp); NaN where it has none.
-  if (anyExternal_)
+  // rule measures its change over the whole cycle (trace_temperature.cpp), in the cells it reads (a
+  // solid has mass there); NaN elsewhere and where the fluid has none.
+  if (anyExternal_) {
+    std::vector<char> solid(ownedCells_.size(), 0);
+    for (const MaterialState& m : st_.mat)
+      if (m.external)
+        ownedCells_.forEach([&](std::size_t a, std::int64_t c) { solid[a] |= m.mass.data()[c] > 0; });
     for (MaterialState& m : st_.mat) {
       if (m.external) continue;
       if (m.tempCycle.npts() == 0) m.tempCycle = m.eint;
       double* T = m.tempCycle.data();
       const double *ms = m.mass.data(), *sv = m.spvol.data(), *es = m.eint.data();
-      ownedCells_.forEach([&](std::size_t, std::int64_t c) {
-        T[c] = ms[c] > 0 && sv[c] > 0 && std::isfinite(sv[c]) ? m.eos->temperature(1.0 / sv[c], es[c])
-                                                               : std::numeric_limits<double>::quiet_NaN();
+      ownedCells_.forEach([&](std::size_t a, std::int64_t c) {
+        T[c] = solid[a] && ms[c] > 0 && sv[c] > 0 && std::isfinite(sv[c]) ? m.eos->temperature(1.0 / sv[c], es[c])
+                                                                          : std::numeric_limits<double>::quiet_NaN();
       });
     }
+  }
   std::vector<const double*> rho, e;
   std::vector<double*> rhoMicro;
   for (MaterialState& m : st_.mat) {  // theta holds m/V and spvol the micro density meanwhile
